@@ -1,0 +1,71 @@
+// singlestrip — one triangle strip for an oriented 2-manifold (Gopi, "Controllable Single-Strip
+// Generation for Triangulated Surfaces", §3 and §5), with midpoint splits where one strip is
+// otherwise impossible.
+//
+// Contract. Given an edge-connected, consistently oriented manifold triangle mesh (any genus, any
+// number of boundary loops), build_strip() returns a mesh that covers exactly the same surface
+// (input vertices unchanged, midpoints appended) whose faces form ONE sequence in which
+// consecutive faces share an edge. How it terminates: docs/algorithm.md.
+//
+// Complexity: O(F log F) for the strip plus O(F) per fundamental triangle search (at most
+// 2g + b - 1 of them); see docs/algorithm.md. Splits are bounded by the number of input faces.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include "singlestrip/mesh.hpp"
+
+namespace singlestrip {
+
+struct StripOptions {
+    /// Input face to start from. Default: a face on the mesh boundary when there is one (§4).
+    std::optional<uint32_t> seed_face;
+    /// Greedy turns (paper Algorithm 2) and the neighbour-count ordering; off = the paper's
+    /// plain same-direction turn rule.
+    bool greedy = true;
+    /// Edges the strip never crosses, as pairs of input vertex indices (§5.1).
+    std::vector<std::pair<uint32_t, uint32_t>> constraint_edges;
+    /// First strip face is incident to `source`, last to `target` (§5.2); input vertex indices.
+    std::optional<uint32_t> source;
+    std::optional<uint32_t> target;
+    /// Call Mesh::validate() after every split (tests only: O(F) per split).
+    bool validate_each_split = false;
+};
+
+struct StripStats {
+    uint32_t input_triangles = 0;
+    uint32_t output_triangles = 0;
+    uint32_t splits = 0;
+    uint32_t swaps = 0;  ///< consecutive turns in the same direction
+    uint32_t fundamental_triangles = 0;
+    uint32_t deferred_regions = 0;
+    long long genus = 0;
+    uint32_t boundary_loops = 0;
+};
+
+struct StripResult {
+    Mesh mesh;                   ///< the split mesh (faces in construction order)
+    std::vector<uint32_t> order; ///< faces of `mesh` in strip order (a permutation of all faces)
+    /// Positions in `order` of the fundamental triangles met (§3.1, seeds of §4's cycles).
+    std::vector<uint32_t> fundamental_positions;
+    StripStats stats;
+};
+
+/// Builds one strip. \pre mesh is edge-connected (num_components() == 1 through edges that are
+/// not constraints) and valid. \throw RequestError for an out-of-range seed face, source or
+/// target, a constraint pair that is not a mesh edge, or constraints that disconnect the
+/// surface (message gives the pieces); InternalError on a broken invariant (bug).
+StripResult build_strip(Mesh mesh, const StripOptions& options = {});
+
+/// Output arrays in strip order: faces as vertex triples (orientation kept) and their parents.
+struct StripArrays {
+    std::vector<Point3> points;
+    std::vector<Triangle> faces;
+    std::vector<uint32_t> parent;
+};
+StripArrays strip_arrays(const StripResult& result);
+
+}  // namespace singlestrip
