@@ -1,0 +1,78 @@
+// singlestrip — reading meshes, constraint files, and writing results atomically.
+//
+// Input formats (chosen by the file extension, case-insensitive):
+//   .obj  Wavefront OBJ (v / f records; f entries "i", "i/t", "i/t/n", "i//n"; 1-based)
+//   .off  OFF / COFF (colours ignored)
+//   .ply  PLY, ASCII or binary (little/big endian); extra vertex/face properties are ignored
+//   .stl  STL, ASCII or binary
+// Parsing is done by CGAL's polygon-soup readers; singlestrip adds its own checks around them so
+// that every failure names the file, the element and the problem.
+//
+// Vertex numbering. Users name vertices by their index in the file, so vertices keep the file's
+// order and indices (0-based). Unreferenced vertices are kept (algorithms ignore them).
+// STL has no shared vertices: its corners are WELDED — corners with exactly equal coordinates
+// (bitwise-equal doubles after parsing; no tolerance) are one vertex, and vertices are numbered in
+// order of first appearance in the file.
+//
+// Polygons with k > 3 corners (v0..v{k-1}) are fan-triangulated as (v0, vi, vi+1), i = 1..k-2,
+// in file order; TriangleSoup::source_polygon[t] is the file polygon of triangle t. The triangle
+// index after triangulation is what the output's `parent` refers to.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "singlestrip/soup.hpp"
+
+namespace singlestrip {
+
+/// Reads a mesh file (see formats above) into a triangle soup, in file order.
+/// \throw InputError (message starts with the path) when the file is missing or unreadable,
+///        empty, has an unknown extension, is malformed or truncated, has a face index out of
+///        range ("face N references vertex K but the file has only M vertices"), a NaN or
+///        infinite coordinate ("vertex N"), a polygon with fewer than 3 corners, or no faces.
+/// Structural problems (repeated vertex, non-manifold, orientation, ...) are NOT checked here:
+/// see validate.hpp. Complexity O(file size).
+TriangleSoup read_mesh_file(const std::string& path);
+
+/// Reads a constraint file: one polyline per line, written as whitespace-separated input vertex
+/// indices (0-based); '#' starts a comment; blank lines are ignored. A polyline a b c yields the
+/// vertex pairs (a,b), (b,c), in file order. Whether a pair is a mesh edge is checked by the
+/// strip builder (RequestError), not here.
+/// \throw InputError naming the file and line for a missing/unreadable file, a token that is
+///        not a non-negative integer, a polyline with a single vertex, or an index >= num_vertices.
+std::vector<std::pair<uint32_t, uint32_t>> read_constraints(const std::string& path, uint32_t num_vertices);
+
+/// Output mesh formats, chosen by extension.
+enum class OutputFormat { Ply, Obj, Off };
+
+/// Output format of `path` from its extension (.ply / .obj / .off, case-insensitive).
+/// \throw RequestError for any other extension (call this before doing any work).
+OutputFormat output_format_for(const std::string& path);
+
+/// Writes the strip mesh: `points` (input vertices first, unchanged; midpoints after) and `faces`
+/// in the given (strip) order, each with its winding.
+///   .ply: binary_little_endian 1.0; `element vertex` with `property double x y z`; `element face`
+///         with `property list uchar uint vertex_indices` and `property uint parent`.
+///   .obj: "v x y z" lines then "f a b c" (1-based); parents as a comment block is NOT written.
+///   .off: "OFF", counts, vertices, "3 a b c" faces.
+/// Coordinates are written with 17 significant digits (text formats) so they round-trip exactly.
+/// The file is written to a temporary in the same directory and renamed into place at the end:
+/// a failure never leaves a partial output.
+/// \pre parent.size() == faces.size(), every face index < points.size().
+/// \throw RequestError for an unknown extension (before writing), OutputError on any I/O failure.
+void write_strip_mesh(const std::string& path, const std::vector<Point3>& points,
+                      const std::vector<Triangle>& faces, const std::vector<uint32_t>& parent);
+
+/// Writes indices as whitespace-separated decimal text, 16 per line, atomically.
+/// \throw OutputError.
+void write_indices(const std::string& path, const std::vector<uint32_t>& indices);
+
+/// Writes `text` to `path` atomically (temporary file in the same directory + rename).
+/// \throw OutputError.
+void write_text_atomic(const std::string& path, std::string_view text);
+
+}  // namespace singlestrip

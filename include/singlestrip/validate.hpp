@@ -1,0 +1,77 @@
+// singlestrip — structural diagnosis of a triangle soup before building a Mesh.
+//
+// These checks work on the plain soup (no corner table), so they can describe every problem of
+// an invalid input precisely; Mesh::from_soup() assumes a soup that passed them.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "singlestrip/soup.hpp"
+
+namespace singlestrip {
+
+/// One structural problem of a soup. `kind` is a stable machine-readable tag:
+///   "index_out_of_range", "repeated_vertex", "duplicate_face", "non_manifold_edge",
+///   "non_manifold_vertex", "inconsistent_orientation", "non_orientable", "components",
+///   "no_faces".
+/// `message` names the element(s) (face / edge / vertex numbers, 0-based) and the problem.
+struct SoupProblem {
+    std::string kind;
+    std::string message;
+};
+
+/// Every structural problem of `soup`, in a deterministic order (by kind as listed above, then
+/// by element). Per-element lists are capped (the last entry says how many more were found) so a
+/// badly broken file gives a readable report. An empty result means the soup is a valid input for
+/// stripification: an edge-connected, consistently oriented 2-manifold (with or without boundary).
+/// Orientation is checked by BFS propagation over manifold edges: an edge traversed in the same
+/// direction by both faces is "inconsistent_orientation"; if no flipping of faces can make the
+/// surface consistent, "non_orientable" is reported as well.
+/// Complexity O(F log F).
+std::vector<SoupProblem> diagnose_soup(const TriangleSoup& soup);
+
+struct PrepareOptions {
+    /// Consistently re-orient an orientable mesh by flipping faces (each component keeps the
+    /// orientation of its lowest-numbered face) instead of reporting inconsistent orientation.
+    bool orient = false;
+};
+
+/// Checks (and with opt.orient, re-orients) `soup`; returns it ready for Mesh::from_soup().
+/// Flipping face (a,b,c) gives (a,c,b); face order and vertex indices never change.
+/// \throw InputError whose message is "<filename_for_messages>: " followed by the first problems
+///        (up to 5, "; "-separated, with a count of the rest). A non-orientable surface is always
+///        an error. Complexity O(F log F).
+TriangleSoup prepare_soup(TriangleSoup soup, const PrepareOptions& opt, const std::string& filename_for_messages);
+
+/// Throws like prepare_soup() without re-orienting; convenience for callers with a soup.
+void validate_soup(const TriangleSoup& soup, const std::string& filename_for_messages);
+
+/// Topological summary of a soup, computed on the soup itself (valid or not).
+struct MeshInfo {
+    uint64_t vertices = 0;             ///< all vertices in the file
+    uint64_t referenced_vertices = 0;  ///< vertices used by at least one face
+    uint64_t faces = 0;                ///< triangles after fan triangulation
+    uint64_t polygons = 0;             ///< file polygons (== faces if all were triangles)
+    uint64_t edges = 0;                ///< distinct undirected edges
+    uint64_t boundary_edges = 0;       ///< edges with exactly one face
+    uint64_t non_manifold_edges = 0;   ///< edges with more than two faces
+    uint64_t components = 0;           ///< edge-connected components of faces
+    uint64_t boundary_loops = 0;       ///< closed loops of boundary edges (meaningful if manifold)
+    long long euler_characteristic = 0;///< V(referenced) - E + F
+    /// (2*components - chi - boundary_loops)/2 summed as for one surface; only meaningful for a
+    /// valid (connected, manifold, orientable) mesh — `genus_valid` says so.
+    long long genus = 0;
+    bool genus_valid = false;
+    bool orientable = false;  ///< every component can be oriented consistently (manifold edges)
+    bool oriented = false;    ///< ... and already is
+    std::vector<uint64_t> component_sizes;  ///< faces per component, largest first
+    std::vector<SoupProblem> problems;      ///< diagnose_soup(soup)
+    [[nodiscard]] bool valid() const noexcept { return problems.empty(); }
+};
+
+/// Computes MeshInfo. Complexity O(F log F).
+MeshInfo mesh_info(const TriangleSoup& soup);
+
+}  // namespace singlestrip
