@@ -1,0 +1,130 @@
+// singlestrip — the independent verifier behind `singlestrip verify`.
+//
+// Independence. This checker shares no code with the strip builder, the mesh core (mesh.cpp)
+// or the encoder: it has its own adjacency (hash maps over vertex pairs), its own
+// GL_TRIANGLE_STRIP decoder and its own readers for the OUTPUT files (.ply/.obj/.off). Only
+// verify_files() uses the project's input readers (io.hpp), to read the INPUT mesh and the
+// constraint file.
+//
+// What verify() checks (every failure message names the property and the face numbers):
+//   * original vertices unchanged: out_points[0..n) == in_points exactly (n = in_points.size());
+//   * geometry: each output face lies in its parent's plane and inside the parent (barycentric,
+//     tolerance 1e-9 relative to the parent's size), is not degenerate, and has the parent's
+//     orientation; per parent the children's areas sum to the parent's area (relative 1e-9);
+//     every input face has at least one child;
+//   * conforming oriented manifold: no repeated vertex in a face, no duplicate face, every edge
+//     in at most two faces traversed in opposite directions, every vertex one fan, no
+//     T-junction (every output edge with one face lies on an input boundary edge and the output
+//     boundary edges tile each input boundary edge exactly); same Euler characteristic and
+//     number of boundary loops as the input (referenced vertices only);
+//   * strip: consecutive faces share an edge (two common vertices);
+//   * indices (optional): the standard GL_TRIANGLE_STRIP decoding (triangle i = s[i],s[i+1],
+//     s[i+2], odd i flipped, triangles with a repeated index skipped) gives exactly out_faces,
+//     in order, each with the same cyclic vertex order;
+//   * constraints (optional): every pair is an input edge; no two consecutive faces share a
+//     constraint edge or a piece of one; no constraint edge is split (the edge is an output
+//     edge and no output vertex lies strictly inside it);
+//   * source/target (optional): the first face has vertex `source`, the last has `target`;
+//   * cycles (optional): each cycle is a closed chain of edge-adjacent output faces; there are
+//     2g+h-1 of them (2g for a closed surface); they are linearly independent in H1(M; Z2),
+//     tested by their intersection parities with a basis of H1(M, dM) built by tree-cotree on
+//     the output mesh, Gaussian elimination over Z2 (rank must equal the count).
+//
+// Parent inference. When out_parent is empty (OBJ/OFF outputs) each output face gets the input
+// face containing its centroid, found among the input faces around its original vertices or
+// around a neighbouring face's parent (breadth-first over output faces).
+//
+// Complexity: O((V + F) * (1 + average hashing cost)) for everything except the cycle check,
+// which costs O(L + (V + E) * m / 64 + m^3 / 64) for m cycles of total length L. Parent
+// inference costs O(sum over input vertices of degree^2) in the worst case (fans).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "singlestrip/soup.hpp"
+
+namespace singlestrip {
+
+/// Everything verify() looks at. Indices are 0-based; vertex ids of `constraints`, `source`,
+/// `target` are input vertex ids (== output vertex ids, by the output contract).
+struct VerifyInput {
+    std::vector<Point3> in_points;
+    std::vector<Triangle> in_faces;
+    std::vector<Point3> out_points;
+    std::vector<Triangle> out_faces;                 ///< in strip order
+    std::vector<uint32_t> out_parent;                ///< parent input face per output face; empty = infer
+    std::optional<std::vector<uint32_t>> indices;    ///< GL_TRIANGLE_STRIP indices
+    std::vector<std::pair<uint32_t, uint32_t>> constraints;
+    std::optional<uint32_t> source;
+    std::optional<uint32_t> target;
+    std::optional<std::vector<std::vector<uint32_t>>> cycles;  ///< face-index chains into out_faces
+};
+
+struct VerifyReport {
+    std::vector<std::string> failures;  ///< one line per violated property (capped per check)
+    std::vector<std::string> notes;     ///< checks skipped because an earlier one failed, etc.
+    size_t faces_checked = 0;           ///< output faces examined
+    size_t input_faces = 0;
+    size_t output_faces = 0;
+    size_t output_vertices = 0;         ///< referenced output vertices
+    long long euler_characteristic = 0; ///< of the output (referenced vertices)
+    size_t boundary_loops = 0;          ///< of the output
+    long long genus = 0;                ///< of the output, from Euler characteristic and loops
+    size_t cycles_checked = 0;
+    size_t cycle_rank = 0;              ///< Z2 rank of the cycles (when computed)
+    [[nodiscard]] bool ok() const noexcept { return failures.empty(); }
+    /// Human-readable multi-line summary: "OK ..." or the failures.
+    [[nodiscard]] std::string to_string() const;
+};
+
+/// Checks every property listed at the top of this header. Pure; never throws on bad data
+/// (out-of-range indices, NaN, empty arrays): each problem becomes a failure line.
+/// \throw std::bad_alloc only.
+VerifyReport verify(const VerifyInput& input);
+
+/// Optional extra files for verify_files().
+struct VerifyFileOptions {
+    std::optional<std::string> indices_path;      ///< whitespace-separated GL_TRIANGLE_STRIP indices
+    std::optional<std::string> constraints_path;  ///< polylines, as for `strip --constraints`
+    std::optional<uint32_t> source;
+    std::optional<uint32_t> target;
+    std::optional<std::string> cycles_path;       ///< JSON {"cycles": [[face, ...], ...]}
+};
+
+/// Reads the input mesh (read_mesh_file), the output mesh (read_output_mesh) and the optional
+/// files, then runs verify(). Parents come from the PLY `parent` property when present, else
+/// they are inferred geometrically.
+/// \throw InputError (naming the file) when a file is missing, unreadable or malformed; the
+///        verification results themselves are never thrown, they are in the report.
+VerifyReport verify_files(const std::string& in_path, const std::string& out_path,
+                          const VerifyFileOptions& options = {});
+
+/// An output mesh as read back from a file.
+struct OutputMesh {
+    std::vector<Point3> points;
+    std::vector<Triangle> faces;
+    std::vector<uint32_t> parent;  ///< empty unless the PLY has a face property `parent`
+};
+
+/// Reads an output file by extension: .ply (ascii, binary_little_endian or binary_big_endian;
+/// vertex properties x y z of any numeric type; face list `vertex_indices` (or `vertex_index`);
+/// optional face property `parent`), .obj (v / f records, "i", "i/t", "i/t/n", "i//n", negative
+/// indices relative), .off. This reader is the verifier's own (independent of io.hpp).
+/// \throw InputError naming the file and the problem: missing/unreadable, unknown extension,
+///        malformed header, truncated data, a face that is not a triangle, an index out of range.
+OutputMesh read_output_mesh(const std::string& path);
+
+/// Reads whitespace-separated non-negative integers (an --indices file).
+/// \throw InputError naming the file and the offending token.
+std::vector<uint32_t> read_index_file(const std::string& path);
+
+/// Reads a cycles JSON file {"cycles": [[face, ...], ...]}.
+/// \throw InputError naming the file when it is missing or not of that shape.
+std::vector<std::vector<uint32_t>> read_cycles_file(const std::string& path);
+
+}  // namespace singlestrip
