@@ -1,0 +1,585 @@
+// singlestrip — single-strip builder.
+//
+// Gopi, "Controllable Single-Strip Generation for Triangulated Surfaces": greedy strip growth
+// over the unstriped region U, left/right turns, split candidates classified as bridge or
+// fundamental triangles, greedy turns (Algorithm 2), constraint edges (§5.1), start/end
+// vertices (§5.2). The paper's split rule does not terminate in general (field notes); this file
+// replaces it by *deferred islands*: see docs/algorithm.md for the rule and its termination proof.
+//
+// Invariant (G): while growing a region R from the strip's current face T, the unstriped faces of
+// R are edge-connected through passable edges and T touches them (unless none are left).
+// Each step takes a neighbour N of T whose removal keeps R connected ("safe"); if none is safe,
+// N is a bridge: we still take it, keep one island as R and *defer* the other, to be spliced in
+// later by one midpoint split at the face it was cut from (absorb()).
+#include "singlestrip/strip.hpp"
+
+#include <algorithm>
+#include <string>
+
+#include "singlestrip/errors.hpp"
+
+namespace singlestrip {
+
+namespace {
+
+constexpr uint32_t kNoRegion = kNone;
+
+class Builder {
+public:
+    Builder(Mesh mesh, const StripOptions& options) : mesh_(std::move(mesh)), opt_(options) {}
+
+    StripResult run();
+
+private:
+    // ---- per-face / per-half-edge state (resized on every split) ----
+    Mesh mesh_;
+    const StripOptions& opt_;
+    std::vector<uint8_t> blocked_;     ///< per half-edge: constraint edge (never crossed)
+    std::vector<uint8_t> striped_;     ///< per face: already in the strip
+    std::vector<uint32_t> region_;     ///< per face: region label of an unstriped face
+    std::vector<uint32_t> next_, prev_;///< per face: doubly linked strip
+    std::vector<uint32_t> stamp_;      ///< per face: search marks (stamp_base_ + side)
+    uint32_t stamp_base_ = 0;
+    std::vector<uint8_t> fundamental_; ///< per face: taken as a fundamental triangle
+
+    // ---- regions ----
+    std::vector<uint32_t> region_size_;  ///< unstriped faces per region label
+    struct Deferred {
+        uint32_t region;
+        uint32_t anchor;  ///< half-edge of a face in the region, facing the striped face it was cut from
+        bool done;
+    };
+    std::vector<Deferred> deferred_;
+    std::vector<uint32_t> deferred_of_region_;
+
+    uint32_t head_ = kNone, tail_ = kNone;
+    StripStats stats_;
+    int last_turn_ = 0;  ///< +1 right, -1 left, 0 none
+
+    // scratch
+    std::vector<uint32_t> side_[2];
+
+    [[nodiscard]] bool passable(uint32_t h) const { return !mesh_.is_boundary(h) && !blocked_[h]; }
+    [[nodiscard]] bool in_region(uint32_t f, uint32_t r) const { return f != kNone && !striped_[f] && region_[f] == r; }
+    /// Face across h if it is an unstriped face of region r, else kNone.
+    [[nodiscard]] uint32_t open_neighbor(uint32_t h, uint32_t r) const {
+        if (!passable(h)) return kNone;
+        const uint32_t g = mesh_.neighbor(h);
+        return in_region(g, r) ? g : kNone;
+    }
+    [[nodiscard]] uint32_t count_open(uint32_t f, uint32_t r) const {
+        uint32_t n = 0;
+        for (uint32_t k = 0; k < 3; ++k) n += open_neighbor(3 * f + k, r) != kNone;
+        return n;
+    }
+
+    void grow_arrays();
+    uint32_t new_region(uint32_t size);
+    void insert_after(uint32_t cursor, uint32_t f);
+    void take(uint32_t cursor, uint32_t f);
+
+    enum class Kind { Safe, Bridge };
+    struct Classification {
+        Kind kind = Kind::Safe;
+        bool fundamental = false;
+        uint32_t small_side = 0;  ///< 0: the island of `a`, 1: the island of `b` (Bridge only)
+        uint32_t a = kNone, b = kNone;  ///< N's open neighbours other than T
+        uint32_t ha = kNone, hb = kNone;  ///< N's half-edges towards a and b
+    };
+    Classification classify(uint32_t n, uint32_t from, uint32_t r);
+    bool fan_connects(uint32_t n, uint32_t ha, uint32_t hb, uint32_t r) const;
+    int bidirectional_search(uint32_t n, uint32_t a, uint32_t b, uint32_t r);
+
+    void grow(uint32_t cursor, uint32_t region, uint32_t dest);
+    uint32_t take_bridge(uint32_t cursor, uint32_t n, uint32_t region, uint32_t dest, const Classification& c);
+    uint32_t take_forced(uint32_t cursor, uint32_t f, uint32_t region, uint32_t dest);
+    void defer(uint32_t region, uint32_t anchor);
+    void absorb(uint32_t record);
+    bool absorb_at_tail();
+    uint32_t choose_seed() const;
+    void check_split_budget() const;
+};
+
+void Builder::grow_arrays() {
+    const uint32_t nf = mesh_.num_faces();
+    striped_.resize(nf, 0);
+    region_.resize(nf, kNoRegion);
+    next_.resize(nf, kNone);
+    prev_.resize(nf, kNone);
+    stamp_.resize(nf, 0);
+    fundamental_.resize(nf, 0);
+    blocked_.resize(mesh_.num_halfedges(), 0);
+}
+
+uint32_t Builder::new_region(uint32_t size) {
+    region_size_.push_back(size);
+    deferred_of_region_.push_back(kNone);
+    return static_cast<uint32_t>(region_size_.size() - 1);
+}
+
+void Builder::insert_after(uint32_t cursor, uint32_t f) {
+    if (cursor == kNone) {
+        next_[f] = head_;
+        prev_[f] = kNone;
+        if (head_ != kNone) prev_[head_] = f;
+        head_ = f;
+        if (tail_ == kNone) tail_ = f;
+        return;
+    }
+    const uint32_t nx = next_[cursor];
+    next_[cursor] = f;
+    prev_[f] = cursor;
+    next_[f] = nx;
+    if (nx != kNone) prev_[nx] = f; else tail_ = f;
+}
+
+void Builder::take(uint32_t cursor, uint32_t f) {
+    if (striped_[f]) throw InternalError("strip builder: face " + std::to_string(f) + " taken twice");
+    striped_[f] = 1;
+    --region_size_[region_[f]];
+    insert_after(cursor, f);
+}
+
+// Local cavity test (paper Fig. 6): walk around the vertex V shared by N's edges towards a and
+// b, starting at a and moving away from N, through open faces of r. Reaching b proves a and b
+// stay connected without N.
+bool Builder::fan_connects(uint32_t n, uint32_t ha, uint32_t hb, uint32_t r) const {
+    const uint32_t v = mesh_.from(ha) == mesh_.to(hb) ? mesh_.from(ha) : mesh_.to(ha);
+    const uint32_t b = mesh_.neighbor(hb);
+    uint32_t g = mesh_.twin(ha);  // in face a, incident to v
+    for (uint32_t guard = 0; guard < 4096; ++guard) {
+        const uint32_t other = mesh_.from(g) == v ? Mesh::prev(g) : Mesh::next(g);
+        if (!passable(other)) return false;
+        g = mesh_.twin(other);
+        const uint32_t f = Mesh::face(g);
+        if (f == b) return true;
+        if (f == n || !in_region(f, r)) return false;
+    }
+    return false;
+}
+
+// Alternating search from a and from b through open faces of r, never entering n.
+// Returns -1 if they meet (connected), else the side (0 = a, 1 = b) that ran out first; that
+// side's faces are then in side_[s]. Cost O(size of the smaller island) when they are separated.
+int Builder::bidirectional_search(uint32_t n, uint32_t a, uint32_t b, uint32_t r) {
+    stamp_base_ += 2;
+    if (stamp_base_ >= 0xfffffff0u) {
+        std::fill(stamp_.begin(), stamp_.end(), 0);
+        stamp_base_ = 2;
+    }
+    const uint32_t mark[2] = {stamp_base_, stamp_base_ + 1};
+    size_t head[2] = {0, 0};
+    side_[0].clear();
+    side_[1].clear();
+    side_[0].push_back(a);
+    side_[1].push_back(b);
+    stamp_[a] = mark[0];
+    stamp_[b] = mark[1];
+    stamp_[n] = mark[0];  // never enter n (both sides treat it as foreign but not as a meeting)
+    for (;;) {
+        for (int s = 0; s < 2; ++s) {
+            if (head[s] == side_[s].size()) {
+                stamp_[n] = 0;
+                return s;
+            }
+            const uint32_t f = side_[s][head[s]++];
+            for (uint32_t k = 0; k < 3; ++k) {
+                const uint32_t g = open_neighbor(3 * f + k, r);
+                if (g == kNone || g == n) continue;
+                if (stamp_[g] == mark[s]) continue;
+                if (stamp_[g] == mark[1 - s]) {
+                    stamp_[n] = 0;
+                    return -1;
+                }
+                stamp_[g] = mark[s];
+                side_[s].push_back(g);
+            }
+        }
+    }
+}
+
+Builder::Classification Builder::classify(uint32_t n, uint32_t from, uint32_t r) {
+    Classification c;
+    for (uint32_t k = 0; k < 3; ++k) {
+        const uint32_t h = 3 * n + k;
+        const uint32_t g = open_neighbor(h, r);
+        if (g == kNone || g == from) continue;
+        if (c.a == kNone) {
+            c.a = g;
+            c.ha = h;
+        } else {
+            c.b = g;
+            c.hb = h;
+        }
+    }
+    if (c.b == kNone) return c;  // at most one open neighbour: removing n keeps R connected
+    if (fan_connects(n, c.ha, c.hb, r)) return c;
+    const int s = bidirectional_search(n, c.a, c.b, r);
+    if (s < 0) {
+        c.fundamental = true;  // a split candidate that is not a bridge (§3.1)
+        return c;
+    }
+    c.kind = Kind::Bridge;
+    c.small_side = static_cast<uint32_t>(s);
+    return c;
+}
+
+void Builder::defer(uint32_t region, uint32_t anchor) {
+    deferred_of_region_[region] = static_cast<uint32_t>(deferred_.size());
+    deferred_.push_back({region, anchor, false});
+    ++stats_.deferred_regions;
+}
+
+void Builder::check_split_budget() const {
+    // docs/algorithm.md: every split is followed by two takes from the region it enlarged, so
+    // splits <= input faces. Exceeding it means a broken invariant, never a long loop.
+    if (stats_.splits > mesh_.num_input_faces())
+        throw InternalError("strip builder: split budget exceeded (" + std::to_string(stats_.splits) + " splits)");
+}
+
+// Grows the strip after `cursor` through region `region`; if dest != kNone the region must end
+// with dest (it is spliced before an existing strip face).
+void Builder::grow(uint32_t cursor, uint32_t region, uint32_t dest) {
+    uint32_t t = cursor;
+    while (region_size_[region] > 0) {
+        // Candidates: open neighbours of t, excluding dest while anything else is left.
+        uint32_t cand[3];
+        uint32_t hc[3];
+        uint32_t nc = 0;
+        bool dest_adjacent = false;
+        for (uint32_t k = 0; k < 3; ++k) {
+            const uint32_t h = 3 * t + k;
+            const uint32_t g = open_neighbor(h, region);
+            if (g == kNone) continue;
+            if (g == dest && region_size_[region] > 1) {
+                dest_adjacent = true;
+                continue;
+            }
+            cand[nc] = g;
+            hc[nc++] = h;
+        }
+        if (nc == 0) {
+            if (dest_adjacent) {
+                // Only dest is reachable: end here and defer the rest of the region; it touches
+                // dest through dest's third edge (its other edges lead to t and to the strip).
+                take(t, dest);
+                uint32_t anchor = kNone;
+                for (uint32_t k = 0; k < 3 && anchor == kNone; ++k)
+                    if (open_neighbor(3 * dest + k, region) != kNone) anchor = mesh_.twin(3 * dest + k);
+                if (anchor == kNone) throw InternalError("strip builder: region lost contact with its end face");
+                defer(region, anchor);
+                return;
+            }
+            throw InternalError("strip builder: strip stuck with " + std::to_string(region_size_[region]) +
+                                " faces left in its region (invariant G broken)");
+        }
+        // Turn of each candidate relative to the in-edge of t.
+        const uint32_t pv = prev_[t];
+        const uint32_t hin = pv == kNone ? kNone : mesh_.shared_halfedge(t, pv);
+        int turn[3] = {0, 0, 0};
+        for (uint32_t i = 0; i < nc; ++i)
+            turn[i] = hin == kNone ? 0 : (hc[i] == Mesh::next(hin) ? +1 : -1);
+        // Order: greedy = fewer open neighbours first (Warnsdorff), ties alternate the turn;
+        // paper = keep the same turn direction as before.
+        uint32_t idx[3] = {0, 1, 2};
+        uint32_t deg[3] = {0, 0, 0};
+        for (uint32_t i = 0; i < nc; ++i) deg[i] = count_open(cand[i], region);
+        auto better = [&](uint32_t i, uint32_t j) {
+            if (opt_.greedy) {
+                if (deg[i] != deg[j]) return deg[i] < deg[j];
+                return turn[i] != last_turn_ && turn[j] == last_turn_;
+            }
+            return turn[i] == (last_turn_ == 0 ? +1 : last_turn_) && turn[j] != turn[i];
+        };
+        if (nc == 2 && better(1, 0)) std::swap(idx[0], idx[1]);
+
+        uint32_t chosen = kNone;
+        Classification cls[2];
+        for (uint32_t i = 0; i < nc && chosen == kNone; ++i) {
+            cls[i] = classify(cand[idx[i]], t, region);
+            if (cls[i].kind == Kind::Safe) chosen = i;
+            if (!opt_.greedy) break;  // paper without greedy turns: the preferred neighbour only
+        }
+        if (chosen != kNone) {
+            const uint32_t n = cand[idx[chosen]];
+            if (cls[chosen].fundamental) {
+                fundamental_[n] = 1;
+                ++stats_.fundamental_triangles;
+            }
+            last_turn_ = turn[idx[chosen]];
+            take(t, n);
+            t = n;
+            continue;
+        }
+        // Every candidate considered is a bridge: take the first anyway, continue into one island
+        // and defer the other (relabelled, so R stays connected: invariant G).
+        // side_ holds the islands of the candidate classified last: take that one.
+        const uint32_t last = opt_.greedy ? nc - 1 : 0;
+        const uint32_t n = cand[idx[last]];
+        last_turn_ = turn[idx[last]];
+        region = take_bridge(t, n, region, dest, cls[last]);
+        t = n;
+    }
+}
+
+// Takes n (a bridge of `region`, classified in c) after cursor: the island holding dest, or the
+// larger one, stays the region to grow; the other is relabelled if needed and deferred,
+// anchored at n. Returns the region to continue in.
+uint32_t Builder::take_bridge(uint32_t cursor, uint32_t n, uint32_t region, uint32_t dest, const Classification& c) {
+    const uint32_t small = c.small_side;
+    const uint32_t small_he = small == 0 ? c.ha : c.hb;
+    const uint32_t large_he = small == 0 ? c.hb : c.ha;
+    const uint32_t small_size = static_cast<uint32_t>(side_[small].size());
+    const uint32_t large_size = region_size_[region] - 1 - small_size;
+    bool dest_in_small = false;
+    const uint32_t r_small = new_region(small_size);
+    for (uint32_t f : side_[small]) {
+        region_[f] = r_small;
+        dest_in_small |= f == dest;
+    }
+    region_size_[region] = large_size + 1;  // + n, taken below
+    take(cursor, n);
+    if (dest_in_small) {
+        defer(region, mesh_.twin(large_he));
+        return r_small;
+    }
+    defer(r_small, mesh_.twin(small_he));
+    return region;
+}
+
+// Takes f after cursor when f is forced (no choice): if f is a bridge of its region, the island
+// without dest is deferred. Returns the region to continue in.
+uint32_t Builder::take_forced(uint32_t cursor, uint32_t f, uint32_t region, uint32_t dest) {
+    const Classification c = classify(f, cursor, region);
+    if (c.kind == Kind::Bridge) return take_bridge(cursor, f, region, dest, c);
+    if (c.fundamental) {
+        fundamental_[f] = 1;
+        ++stats_.fundamental_triangles;
+    }
+    take(cursor, f);
+    return region;
+}
+
+// Splices a deferred region into the strip at the face it was cut from (its host): the host and
+// the region's anchor face are split at the midpoint of their shared edge; the host's two
+// children keep the host's in- and out-edges, the anchor's two children become the first and
+// last face of the region's own strip, which is grown between them.
+void Builder::absorb(uint32_t record) {
+    Deferred& d = deferred_[record];
+    d.done = true;
+    const uint32_t region = d.region;
+    const uint32_t ha = d.anchor;  // in the anchor face
+    const uint32_t hh = mesh_.twin(ha);
+    if (hh == kNone) throw InternalError("strip builder: deferred region lost its host");
+    const uint32_t host = Mesh::face(hh);
+    const uint32_t anchor = Mesh::face(ha);
+    if (!striped_[host] || !in_region(anchor, region))
+        throw InternalError("strip builder: deferred region " + std::to_string(region) + " has a bad anchor");
+    if (host == tail_) {  // free: the strip simply continues into the region
+        const uint32_t r = take_forced(host, anchor, region, kNone);
+        grow(anchor, r, kNone);
+        return;
+    }
+    const uint32_t p = prev_[host], n = next_[host];
+    // Constraint flags of the two half-edges that split_edge moves into new faces.
+    const uint32_t moved_host = Mesh::next(hh), moved_anchor = Mesh::next(ha);
+    const uint8_t blocked_host = blocked_[moved_host], blocked_anchor = blocked_[moved_anchor];
+    const SplitResult s = mesh_.split_edge(hh);
+    ++stats_.splits;
+    check_split_budget();
+    grow_arrays();
+    blocked_[moved_host] = 0;
+    blocked_[moved_anchor] = 0;
+    blocked_[3 * s.f_b + 1] = blocked_host;
+    blocked_[3 * s.g_a + 1] = blocked_anchor;
+    if (opt_.validate_each_split) mesh_.validate();
+    // Host children: f_a (index host, keeps the edge c->a side) and f_b (new).
+    striped_[s.f_b] = 1;
+    region_[s.f_b] = kNoRegion;
+    region_[s.g_a] = region;
+    ++region_size_[region];
+    // Which host child keeps the in-edge?
+    bool fa_is_in;
+    if (p != kNone) fa_is_in = mesh_.shared_halfedge(s.f_a, p) != kNone;
+    else fa_is_in = mesh_.shared_halfedge(s.f_a, n) == kNone;
+    const uint32_t in_child = fa_is_in ? s.f_a : s.f_b;
+    const uint32_t out_child = fa_is_in ? s.f_b : s.f_a;
+    const uint32_t first = fa_is_in ? s.g_a : s.g_b;  // anchor child next to in_child
+    const uint32_t last = fa_is_in ? s.g_b : s.g_a;
+    // Relink: p -> in_child -> out_child -> n (host's list slot is f_a).
+    if (fa_is_in) {
+        insert_after(s.f_a, s.f_b);
+    } else {
+        // f_b goes before f_a.
+        if (p == kNone) insert_after(kNone, s.f_b);
+        else insert_after(p, s.f_b);
+    }
+    fundamental_[s.f_b] = fundamental_[host];
+    (void)out_child;
+    const uint32_t r = take_forced(in_child, first, region, last);
+    grow(first, r, last);
+}
+
+bool Builder::absorb_at_tail() {
+    for (uint32_t k = 0; k < 3; ++k) {
+        const uint32_t h = 3 * tail_ + k;
+        if (!passable(h)) continue;
+        const uint32_t g = mesh_.neighbor(h);
+        if (striped_[g]) continue;
+        const uint32_t rec = deferred_of_region_[region_[g]];
+        if (rec == kNone || deferred_[rec].done) continue;
+        deferred_[rec].anchor = mesh_.twin(h);
+        absorb(rec);
+        return true;
+    }
+    return false;
+}
+
+uint32_t Builder::choose_seed() const {
+    const uint32_t nf = mesh_.num_faces();
+    if (opt_.seed_face) return *opt_.seed_face;
+    // Prefer a face with two blocked sides (it has one open neighbour: always safe), then one
+    // with one blocked side whose opposite vertex is interior, then any face with a blocked side.
+    uint32_t best = 0;
+    int best_score = -1;
+    for (uint32_t f = 0; f < nf; ++f) {
+        int closed = 0;
+        for (uint32_t k = 0; k < 3; ++k) closed += !passable(3 * f + k);
+        const int score = closed >= 3 ? 0 : closed;
+        if (score > best_score) {
+            best_score = score;
+            best = f;
+            if (score == 2) break;
+        }
+    }
+    return best;
+}
+
+StripResult Builder::run() {
+    const uint32_t nf = mesh_.num_faces();
+    if (nf == 0) throw InputError("mesh has no faces");
+    if (opt_.seed_face && *opt_.seed_face >= nf)
+        throw RequestError("seed face " + std::to_string(*opt_.seed_face) + " is out of range (mesh has " +
+                           std::to_string(nf) + " faces)");
+    grow_arrays();
+    stats_.input_triangles = nf;
+    stats_.boundary_loops = mesh_.num_boundary_loops();
+    stats_.genus = mesh_.genus();
+
+    const uint32_t r0 = new_region(nf);
+    std::fill(region_.begin(), region_.end(), r0);
+    const uint32_t seed = choose_seed();
+    take(kNone, seed);
+    // The seed may cut U apart (up to three pieces): keep the piece of one neighbour as the
+    // region to grow and defer the others.
+    {
+        uint32_t nbr[3], he[3], cnt = 0;
+        for (uint32_t k = 0; k < 3; ++k) {
+            const uint32_t g = open_neighbor(3 * seed + k, r0);
+            if (g != kNone) {
+                nbr[cnt] = g;
+                he[cnt++] = 3 * seed + k;
+            }
+        }
+        if (cnt > 1) {
+            // Flood from the first neighbour; unreached neighbours start pieces of their own.
+            std::vector<uint32_t> stack{nbr[0]};
+            stamp_base_ += 2;
+            stamp_[nbr[0]] = stamp_base_;
+            while (!stack.empty()) {
+                const uint32_t f = stack.back();
+                stack.pop_back();
+                for (uint32_t k = 0; k < 3; ++k) {
+                    const uint32_t g = open_neighbor(3 * f + k, r0);
+                    if (g != kNone && stamp_[g] != stamp_base_) {
+                        stamp_[g] = stamp_base_;
+                        stack.push_back(g);
+                    }
+                }
+            }
+            for (uint32_t i = 1; i < cnt; ++i) {
+                if (stamp_[nbr[i]] == stamp_base_ || region_[nbr[i]] != r0) continue;
+                const uint32_t r = new_region(0);
+                std::vector<uint32_t> st{nbr[i]};
+                region_[nbr[i]] = r;
+                while (!st.empty()) {
+                    const uint32_t f = st.back();
+                    st.pop_back();
+                    ++region_size_[r];
+                    --region_size_[r0];
+                    for (uint32_t k = 0; k < 3; ++k) {
+                        const uint32_t g = open_neighbor(3 * f + k, r0);
+                        if (g != kNone) {
+                            region_[g] = r;
+                            st.push_back(g);
+                        }
+                    }
+                }
+                defer(r, mesh_.twin(he[i]));
+            }
+        }
+    }
+    grow(seed, r0, kNone);
+    // Splice deferred regions: first any that touch the tail (free), then the rest, newest first
+    // (absorbing one may defer more).
+    for (;;) {
+        if (absorb_at_tail()) continue;
+        uint32_t rec = kNone;
+        while (!deferred_.empty()) {
+            if (!deferred_.back().done) {
+                rec = static_cast<uint32_t>(deferred_.size() - 1);
+                break;
+            }
+            deferred_.pop_back();
+        }
+        if (rec == kNone) break;
+        absorb(rec);
+    }
+
+    StripResult result;
+    result.order.reserve(mesh_.num_faces());
+    for (uint32_t f = head_; f != kNone; f = next_[f]) {
+        if (result.order.size() > mesh_.num_faces()) throw InternalError("strip builder: strip list has a cycle");
+        if (fundamental_[f]) result.fundamental_positions.push_back(static_cast<uint32_t>(result.order.size()));
+        result.order.push_back(f);
+    }
+    if (result.order.size() != mesh_.num_faces())
+        throw InternalError("strip builder: strip covers " + std::to_string(result.order.size()) + " of " +
+                            std::to_string(mesh_.num_faces()) + " faces");
+    // Swaps: two consecutive turns in the same direction.
+    int prev_turn = 0;
+    for (size_t i = 1; i + 1 < result.order.size(); ++i) {
+        const uint32_t hin = mesh_.shared_halfedge(result.order[i], result.order[i - 1]);
+        const uint32_t hout = mesh_.shared_halfedge(result.order[i], result.order[i + 1]);
+        if (hin == kNone || hout == kNone) throw InternalError("strip builder: consecutive faces do not share an edge");
+        const int turn = hout == Mesh::next(hin) ? +1 : -1;
+        if (turn == prev_turn) ++stats_.swaps;
+        prev_turn = turn;
+    }
+    stats_.output_triangles = mesh_.num_faces();
+    result.stats = stats_;
+    result.mesh = std::move(mesh_);
+    return result;
+}
+
+}  // namespace
+
+StripResult build_strip(Mesh mesh, const StripOptions& options) {
+    Builder builder(std::move(mesh), options);
+    return builder.run();
+}
+
+StripArrays strip_arrays(const StripResult& result) {
+    StripArrays out;
+    out.points = result.mesh.points();
+    out.faces.reserve(result.order.size());
+    out.parent.reserve(result.order.size());
+    const auto& cv = result.mesh.corner_vertices();
+    for (uint32_t f : result.order) {
+        out.faces.push_back({cv[3 * f], cv[3 * f + 1], cv[3 * f + 2]});
+        out.parent.push_back(result.mesh.parent(f));
+    }
+    return out;
+}
+
+}  // namespace singlestrip
