@@ -1,0 +1,390 @@
+// singlestrip — procedural test meshes; see generators.hpp for the counts of each.
+#include "singlestrip/generators.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <string>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+#include "singlestrip/errors.hpp"
+
+namespace singlestrip {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr uint32_t kUnused = 0xffffffffu;
+
+void require(bool ok, const char* what) {
+    if (!ok) throw RequestError(std::string("generator: ") + what);
+}
+
+/// splitmix64: tiny, fast and identical on every platform (std distributions are not).
+struct Rng {
+    uint64_t state;
+    uint64_t next() {
+        uint64_t z = (state += 0x9e3779b97f4a7c15ull);
+        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+        z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+        return z ^ (z >> 31);
+    }
+    size_t below(size_t n) { return static_cast<size_t>(next() % n); }
+};
+
+uint64_t edge_key(uint32_t a, uint32_t b) { return (uint64_t{a} << 32) | b; }
+
+/// Grid of nx x ny cells of size `cell`, keeping the cells for which keep(i, j) is true;
+/// vertices no kept cell uses are dropped (indices compacted, row-major order kept).
+template <class Keep>
+TriangleSoup grid_cells(uint32_t nx, uint32_t ny, double cell, Keep keep) {
+    const uint32_t w = nx + 1;
+    std::vector<uint32_t> id(static_cast<size_t>(w) * (ny + 1), kUnused);
+    std::vector<Triangle> raw;
+    for (uint32_t j = 0; j < ny; ++j) {
+        for (uint32_t i = 0; i < nx; ++i) {
+            if (!keep(i, j)) continue;
+            const uint32_t a = j * w + i, b = a + 1, c = a + w + 1, d = a + w;  // CCW corners
+            // Alternating diagonals keep the mesh symmetric (no preferred direction).
+            if ((i + j) % 2 == 0) {
+                raw.push_back({a, b, c});
+                raw.push_back({a, c, d});
+            } else {
+                raw.push_back({a, b, d});
+                raw.push_back({b, c, d});
+            }
+        }
+    }
+    for (const Triangle& t : raw)
+        for (uint32_t v : t) id[v] = 0;
+    TriangleSoup soup;
+    for (uint32_t v = 0; v < id.size(); ++v) {
+        if (id[v] == kUnused) continue;
+        id[v] = static_cast<uint32_t>(soup.points.size());
+        soup.points.push_back({(v % w) * cell, (v / w) * cell, 0.0});
+    }
+    soup.triangles.reserve(raw.size());
+    for (const Triangle& t : raw) soup.triangles.push_back({id[t[0]], id[t[1]], id[t[2]]});
+    return soup;
+}
+
+/// Directed edges a->b of the soup mapped to their face.
+std::unordered_map<uint64_t, uint32_t> directed_edges(const TriangleSoup& soup) {
+    std::unordered_map<uint64_t, uint32_t> map;
+    map.reserve(soup.triangles.size() * 3);
+    for (uint32_t f = 0; f < soup.triangles.size(); ++f) {
+        const Triangle& t = soup.triangles[f];
+        for (int k = 0; k < 3; ++k) map[edge_key(t[k], t[(k + 1) % 3])] = f;
+    }
+    return map;
+}
+
+}  // namespace
+
+TriangleSoup make_single_triangle() {
+    TriangleSoup s;
+    s.points = {{0, 0, 0}, {1, 0, 0}, {0.5, 0.8660254037844386, 0}};
+    s.triangles = {{0, 1, 2}};
+    return s;
+}
+
+TriangleSoup make_two_triangles() { return grid_cells(1, 1, 1.0, [](uint32_t, uint32_t) { return true; }); }
+
+TriangleSoup make_fan(uint32_t k) {
+    require(k >= 1, "fan needs k >= 1");
+    // Each wedge stays below pi (CCW) and the whole fan below 2 pi (open).
+    const double step = std::min(kPi / 3, 1.5 * kPi / k);
+    TriangleSoup s;
+    s.points.push_back({0, 0, 0});
+    for (uint32_t i = 0; i <= k; ++i) s.points.push_back({std::cos(i * step), std::sin(i * step), 0});
+    for (uint32_t i = 0; i < k; ++i) s.triangles.push_back({0, i + 1, i + 2});
+    return s;
+}
+
+TriangleSoup make_corridor(uint32_t k) {
+    require(k >= 1, "corridor needs k >= 1");
+    TriangleSoup s;
+    // Even vertices on the top row, odd ones on the bottom row: the GL strip 0,1,2,... is CCW.
+    for (uint32_t i = 0; i < k + 2; ++i) s.points.push_back({0.5 * i, i % 2 == 0 ? 1.0 : 0.0, 0});
+    for (uint32_t i = 0; i < k; ++i) {
+        if (i % 2 == 0) s.triangles.push_back({i, i + 1, i + 2});
+        else s.triangles.push_back({i + 1, i, i + 2});
+    }
+    return s;
+}
+
+TriangleSoup make_grid_disk(uint32_t nx, uint32_t ny) {
+    require(nx >= 1 && ny >= 1, "grid needs nx, ny >= 1");
+    return grid_cells(nx, ny, 1.0, [](uint32_t, uint32_t) { return true; });
+}
+
+TriangleSoup make_annulus(uint32_t n_around, uint32_t n_radial) {
+    require(n_around >= 3 && n_radial >= 1, "annulus needs n_around >= 3, n_radial >= 1");
+    TriangleSoup s;
+    auto id = [&](uint32_t ring, uint32_t i) { return ring * n_around + i % n_around; };
+    for (uint32_t ring = 0; ring <= n_radial; ++ring) {
+        const double r = 1.0 + static_cast<double>(ring) / n_radial;
+        for (uint32_t i = 0; i < n_around; ++i) {
+            const double a = 2 * kPi * i / n_around;
+            s.points.push_back({r * std::cos(a), r * std::sin(a), 0});
+        }
+    }
+    // radial x angular = +z, so (inner, outer, outer next) is CCW.
+    for (uint32_t ring = 0; ring < n_radial; ++ring) {
+        for (uint32_t i = 0; i < n_around; ++i) {
+            const uint32_t a = id(ring, i), b = id(ring + 1, i), c = id(ring + 1, i + 1), d = id(ring, i + 1);
+            s.triangles.push_back({a, b, c});
+            s.triangles.push_back({a, c, d});
+        }
+    }
+    return s;
+}
+
+TriangleSoup make_disk_with_holes(uint32_t k, uint32_t resolution) {
+    require(resolution >= 1, "disk with holes needs resolution >= 1");
+    const uint32_t r = resolution;
+    return grid_cells((2 * k + 1) * r, 3 * r, 1.0 / r, [r](uint32_t i, uint32_t j) {
+        const bool hole_row = j >= r && j < 2 * r;
+        const bool hole_col = (i / r) % 2 == 1;  // columns of blocks 1, 3, 5, ... are holes
+        return !(hole_row && hole_col);
+    });
+}
+
+TriangleSoup make_icosphere(uint32_t subdivisions) {
+    require(subdivisions <= 10, "icosphere needs subdivisions <= 10");
+    const double t = (1.0 + std::sqrt(5.0)) / 2.0;
+    TriangleSoup s;
+    s.points = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
+                {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
+    s.triangles = {{0, 11, 5}, {0, 5, 1}, {0, 1, 7}, {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+                   {11, 10, 2}, {10, 7, 6}, {7, 1, 8}, {3, 9, 4}, {3, 4, 2}, {3, 2, 6}, {3, 6, 8},
+                   {3, 8, 9}, {4, 9, 5}, {2, 4, 11}, {6, 2, 10}, {8, 6, 7}, {9, 8, 1}};
+    for (uint32_t level = 0; level < subdivisions; ++level) {
+        std::unordered_map<uint64_t, uint32_t> mid;
+        auto midpoint = [&](uint32_t a, uint32_t b) {
+            const uint64_t key = a < b ? edge_key(a, b) : edge_key(b, a);
+            auto [it, fresh] = mid.try_emplace(key, static_cast<uint32_t>(s.points.size()));
+            if (fresh) {
+                const Point3 p = s.points[a], q = s.points[b];
+                s.points.push_back({(p[0] + q[0]) / 2, (p[1] + q[1]) / 2, (p[2] + q[2]) / 2});
+            }
+            return it->second;
+        };
+        std::vector<Triangle> next;
+        next.reserve(s.triangles.size() * 4);
+        for (const Triangle& f : s.triangles) {
+            const uint32_t ab = midpoint(f[0], f[1]), bc = midpoint(f[1], f[2]), ca = midpoint(f[2], f[0]);
+            next.push_back({f[0], ab, ca});
+            next.push_back({f[1], bc, ab});
+            next.push_back({f[2], ca, bc});
+            next.push_back({ab, bc, ca});
+        }
+        s.triangles = std::move(next);
+    }
+    for (Point3& p : s.points) {
+        const double n = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+        for (double& c : p) c /= n;
+    }
+    return s;
+}
+
+TriangleSoup make_uv_sphere(uint32_t n_lon, uint32_t n_lat) {
+    require(n_lon >= 3 && n_lat >= 2, "uv sphere needs n_lon >= 3, n_lat >= 2");
+    TriangleSoup s;
+    s.points.push_back({0, 0, 1});  // north pole
+    for (uint32_t k = 1; k < n_lat; ++k) {
+        const double th = kPi * k / n_lat;
+        for (uint32_t j = 0; j < n_lon; ++j) {
+            const double ph = 2 * kPi * j / n_lon;
+            s.points.push_back({std::sin(th) * std::cos(ph), std::sin(th) * std::sin(ph), std::cos(th)});
+        }
+    }
+    const uint32_t south = static_cast<uint32_t>(s.points.size());
+    s.points.push_back({0, 0, -1});
+    auto id = [&](uint32_t ring, uint32_t j) { return 1 + (ring - 1) * n_lon + j % n_lon; };
+    // south x east is outward: (v, its south neighbour, that one's east neighbour).
+    for (uint32_t j = 0; j < n_lon; ++j) s.triangles.push_back({0, id(1, j), id(1, j + 1)});
+    for (uint32_t k = 1; k + 1 < n_lat; ++k) {
+        for (uint32_t j = 0; j < n_lon; ++j) {
+            const uint32_t a = id(k, j), b = id(k + 1, j), c = id(k + 1, j + 1), d = id(k, j + 1);
+            s.triangles.push_back({a, b, c});
+            s.triangles.push_back({a, c, d});
+        }
+    }
+    for (uint32_t j = 0; j < n_lon; ++j) s.triangles.push_back({id(n_lat - 1, j), south, id(n_lat - 1, j + 1)});
+    return s;
+}
+
+TriangleSoup make_torus(uint32_t n_major, uint32_t n_minor) {
+    require(n_major >= 3 && n_minor >= 3, "torus needs n_major, n_minor >= 3");
+    const double big = 1.0, small = 0.35;
+    TriangleSoup s;
+    auto id = [&](uint32_t i, uint32_t j) { return (i % n_major) * n_minor + j % n_minor; };
+    for (uint32_t i = 0; i < n_major; ++i) {
+        const double u = 2 * kPi * i / n_major;
+        for (uint32_t j = 0; j < n_minor; ++j) {
+            const double v = 2 * kPi * j / n_minor;
+            const double rr = big + small * std::cos(v);
+            s.points.push_back({rr * std::cos(u), rr * std::sin(u), small * std::sin(v)});
+        }
+    }
+    // d/du x d/dv points outward, so (i,j), (i+1,j), (i+1,j+1) is outward.
+    for (uint32_t i = 0; i < n_major; ++i) {
+        for (uint32_t j = 0; j < n_minor; ++j) {
+            const uint32_t a = id(i, j), b = id(i + 1, j), c = id(i + 1, j + 1), d = id(i, j + 1);
+            s.triangles.push_back({a, b, c});
+            s.triangles.push_back({a, c, d});
+        }
+    }
+    return s;
+}
+
+TriangleSoup make_genus_surface(uint32_t g, uint32_t resolution) {
+    const TriangleSoup top = make_disk_with_holes(g, resolution);
+    const uint32_t nv = static_cast<uint32_t>(top.points.size());
+    const double half = 0.3;
+    TriangleSoup s;
+    s.points.reserve(2 * nv);
+    for (const Point3& p : top.points) s.points.push_back({p[0], p[1], half});
+    for (const Point3& p : top.points) s.points.push_back({p[0], p[1], -half});
+    for (const Triangle& t : top.triangles) s.triangles.push_back(t);
+    for (const Triangle& t : top.triangles) s.triangles.push_back({t[0] + nv, t[2] + nv, t[1] + nv});
+    // Walls: top boundary half-edge a->b (no b->a) pairs with the bottom's b'->a'; the quad
+    // (b, a, a', b') uses b->a and a'->b', so orientation stays consistent.
+    const auto edges = directed_edges(top);
+    for (const Triangle& t : top.triangles) {
+        for (int k = 0; k < 3; ++k) {
+            const uint32_t a = t[k], b = t[(k + 1) % 3];
+            if (edges.count(edge_key(b, a)) != 0) continue;
+            s.triangles.push_back({b, a, a + nv});
+            s.triangles.push_back({b, a + nv, b + nv});
+        }
+    }
+    return s;
+}
+
+TriangleSoup make_genus_with_holes(uint32_t g, uint32_t h, uint32_t resolution) {
+    TriangleSoup s = make_genus_surface(g, resolution);
+    remove_random_faces_as_holes(s, h, 0x5eedULL + 131ULL * g + h);
+    return s;
+}
+
+TriangleSoup make_moebius_soup(uint32_t n) {
+    require(n >= 3, "moebius band needs n >= 3");
+    TriangleSoup s;
+    // Column i: vertices 2i (one side) and 2i+1 (other side) at half-twist angle i*pi/n.
+    for (uint32_t i = 0; i < n; ++i) {
+        const double u = 2 * kPi * i / n, tw = kPi * i / n;
+        for (int side = -1; side <= 1; side += 2) {
+            const double w = 0.3 * side;
+            const double rr = 1.0 + w * std::cos(tw);
+            s.points.push_back({rr * std::cos(u), rr * std::sin(u), w * std::sin(tw)});
+        }
+    }
+    for (uint32_t i = 0; i < n; ++i) {
+        const uint32_t a = 2 * i, d = 2 * i + 1;
+        uint32_t b = 2 * ((i + 1) % n), c = b + 1;
+        if (i + 1 == n) std::swap(b, c);  // the half twist glues the sides crosswise
+        s.triangles.push_back({a, b, c});
+        s.triangles.push_back({a, c, d});
+    }
+    return s;
+}
+
+TriangleSoup make_builtin_model() {
+    TriangleSoup s = make_genus_surface(2, 8);
+    // The same smooth displacement for both layers keeps the plate free of self-intersections.
+    for (Point3& p : s.points) p[2] += 0.35 * std::sin(1.3 * p[0]) * std::cos(1.7 * p[1]);
+    return s;
+}
+
+size_t random_edge_flips(TriangleSoup& soup, size_t count, uint64_t seed) {
+    if (soup.triangles.empty() || count == 0) return 0;
+    auto edges = directed_edges(soup);
+    std::vector<uint32_t> degree(soup.points.size(), 0);
+    for (const auto& [key, f] : edges) {
+        const uint32_t a = static_cast<uint32_t>(key >> 32), b = static_cast<uint32_t>(key);
+        if (a < b || edges.count(edge_key(b, a)) == 0) {  // count each undirected edge once
+            ++degree[a];
+            ++degree[b];
+        }
+    }
+    Rng rng{seed};
+    size_t done = 0;
+    const size_t max_attempts = 10 * count + 100;
+    const size_t nf = soup.triangles.size();
+    for (size_t attempt = 0; attempt < max_attempts && done < count; ++attempt) {
+        const uint32_t f = static_cast<uint32_t>(rng.below(nf));
+        const int k = static_cast<int>(rng.below(3));
+        const Triangle tf = soup.triangles[f];
+        const uint32_t a = tf[k], b = tf[(k + 1) % 3], c = tf[(k + 2) % 3];
+        const auto it = edges.find(edge_key(b, a));
+        if (it == edges.end()) continue;  // boundary edge
+        const uint32_t g = it->second;
+        const Triangle tg = soup.triangles[g];
+        uint32_t d = kUnused;
+        for (int m = 0; m < 3; ++m)
+            if (tg[m] == b && tg[(m + 1) % 3] == a) d = tg[(m + 2) % 3];
+        if (d == kUnused) continue;  // cannot happen on an oriented manifold; stay safe
+        if (c == d || degree[a] <= 3 || degree[b] <= 3) continue;
+        if (edges.count(edge_key(c, d)) != 0 || edges.count(edge_key(d, c)) != 0) continue;
+        // Quad a, d, b, c is CCW; the new diagonal c-d splits it into (a,d,c) and (d,b,c).
+        soup.triangles[f] = {a, d, c};
+        soup.triangles[g] = {d, b, c};
+        edges.erase(edge_key(a, b));
+        edges.erase(edge_key(b, a));
+        edges[edge_key(a, d)] = f;
+        edges[edge_key(d, c)] = f;
+        edges[edge_key(c, a)] = f;
+        edges[edge_key(d, b)] = g;
+        edges[edge_key(b, c)] = g;
+        edges[edge_key(c, d)] = g;
+        --degree[a];
+        --degree[b];
+        ++degree[c];
+        ++degree[d];
+        ++done;
+    }
+    return done;
+}
+
+void remove_random_faces_as_holes(TriangleSoup& soup, size_t k, uint64_t seed) {
+    if (k == 0) return;
+    const auto edges = directed_edges(soup);
+    // Vertices that must not be touched: on the boundary, or on an already removed face.
+    std::vector<char> blocked(soup.points.size(), 0);
+    for (const auto& [key, f] : edges) {
+        const uint32_t a = static_cast<uint32_t>(key >> 32), b = static_cast<uint32_t>(key);
+        if (edges.count(edge_key(b, a)) == 0) blocked[a] = blocked[b] = 1;
+    }
+    std::vector<uint32_t> order(soup.triangles.size());
+    for (uint32_t f = 0; f < order.size(); ++f) order[f] = f;
+    Rng rng{seed};
+    for (size_t i = order.size(); i > 1; --i) std::swap(order[i - 1], order[rng.below(i)]);
+    std::vector<char> removed(soup.triangles.size(), 0);
+    size_t taken = 0;
+    for (uint32_t f : order) {
+        if (taken == k) break;
+        const Triangle& t = soup.triangles[f];
+        if (blocked[t[0]] || blocked[t[1]] || blocked[t[2]]) continue;
+        for (uint32_t v : t) blocked[v] = 1;
+        removed[f] = 1;
+        ++taken;
+    }
+    if (taken < k)
+        throw RequestError("remove_random_faces_as_holes: only " + std::to_string(taken) +
+                           " isolated interior faces available, " + std::to_string(k) + " requested");
+    const bool has_sources = soup.source_polygon.size() == soup.triangles.size();
+    size_t out = 0;
+    for (size_t f = 0; f < soup.triangles.size(); ++f) {
+        if (removed[f]) continue;
+        soup.triangles[out] = soup.triangles[f];
+        if (has_sources) soup.source_polygon[out] = soup.source_polygon[f];
+        ++out;
+    }
+    soup.triangles.resize(out);
+    if (has_sources) soup.source_polygon.resize(out);
+}
+
+}  // namespace singlestrip

@@ -1,0 +1,356 @@
+// Generators: every mesh is checked by an independent edge-map topology checker (below) and by
+// Mesh::from_soup + validate(); counts and topology must match generators.hpp.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <map>
+#include <numeric>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "singlestrip/errors.hpp"
+#include "singlestrip/generators.hpp"
+#include "singlestrip/mesh.hpp"
+
+using namespace singlestrip;
+
+namespace {
+
+struct Dsu {
+    std::vector<uint32_t> p;
+    explicit Dsu(size_t n) : p(n) { std::iota(p.begin(), p.end(), 0u); }
+    uint32_t find(uint32_t x) {
+        while (p[x] != x) x = p[x] = p[p[x]];
+        return x;
+    }
+    bool unite(uint32_t a, uint32_t b) {
+        a = find(a);
+        b = find(b);
+        if (a == b) return false;
+        p[a] = b;
+        return true;
+    }
+};
+
+uint64_t key(uint32_t a, uint32_t b) { return (uint64_t{a} << 32) | b; }
+
+/// Independent topology of a soup (no use of Mesh).
+struct Topology {
+    std::string problem;  // empty when the soup is an edge-connected oriented manifold
+    long long V = 0, E = 0, F = 0, chi = 0, loops = 0, genus = 0;
+    size_t components = 0;
+    bool unreferenced = false;
+};
+
+Topology analyze(const TriangleSoup& s) {
+    Topology r;
+    r.F = static_cast<long long>(s.triangles.size());
+    std::unordered_map<uint64_t, int> directed;
+    std::vector<char> used(s.points.size(), 0);
+    for (const Triangle& t : s.triangles) {
+        for (int k = 0; k < 3; ++k) {
+            if (t[k] >= s.points.size()) return r.problem = "index out of range", r;
+            used[t[k]] = 1;
+        }
+        if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) return r.problem = "degenerate face", r;
+        for (int k = 0; k < 3; ++k)
+            if (++directed[key(t[k], t[(k + 1) % 3])] > 1) r.problem = "edge used twice in one direction";
+    }
+    if (!r.problem.empty()) return r;
+    for (char u : used) r.V += u;
+    r.unreferenced = r.V != static_cast<long long>(s.points.size());
+    for (const auto& [k, c] : directed) {
+        const uint32_t a = static_cast<uint32_t>(k >> 32), b = static_cast<uint32_t>(k);
+        if (a < b || directed.count(key(b, a)) == 0) ++r.E;
+    }
+    // Vertex manifoldness: the link of every vertex (opposite edges) is one path or one cycle.
+    std::vector<std::vector<std::pair<uint32_t, uint32_t>>> link(s.points.size());
+    for (const Triangle& t : s.triangles)
+        for (int k = 0; k < 3; ++k) link[t[k]].push_back({t[(k + 1) % 3], t[(k + 2) % 3]});
+    for (uint32_t v = 0; v < link.size(); ++v) {
+        if (link[v].empty()) continue;
+        std::map<uint32_t, uint32_t> id;
+        for (auto [a, b] : link[v]) {
+            id.try_emplace(a, static_cast<uint32_t>(id.size()));
+            id.try_emplace(b, static_cast<uint32_t>(id.size()));
+        }
+        Dsu d(id.size());
+        size_t comps = id.size();
+        for (auto [a, b] : link[v]) comps -= d.unite(id[a], id[b]) ? 1 : 0;
+        if (comps != 1) return r.problem = "non-manifold vertex " + std::to_string(v), r;
+    }
+    // Edge-connected components.
+    Dsu faces(s.triangles.size());
+    std::unordered_map<uint64_t, uint32_t> face_of;
+    for (uint32_t f = 0; f < s.triangles.size(); ++f)
+        for (int k = 0; k < 3; ++k) face_of[key(s.triangles[f][k], s.triangles[f][(k + 1) % 3])] = f;
+    r.components = s.triangles.size();
+    for (const auto& [k, f] : face_of) {
+        auto it = face_of.find(key(static_cast<uint32_t>(k), static_cast<uint32_t>(k >> 32)));
+        if (it != face_of.end() && faces.unite(f, it->second)) --r.components;
+    }
+    // Boundary loops: follow boundary half-edges a->b (no b->a); one outgoing per boundary vertex.
+    std::unordered_map<uint32_t, uint32_t> next;
+    for (const auto& [k, c] : directed) {
+        const uint32_t a = static_cast<uint32_t>(k >> 32), b = static_cast<uint32_t>(k);
+        if (directed.count(key(b, a)) == 0) {
+            if (!next.emplace(a, b).second) return r.problem = "two boundary edges leave a vertex", r;
+        }
+    }
+    std::unordered_map<uint32_t, char> seen;
+    for (const auto& [a, b] : next) {
+        if (seen[a]) continue;
+        ++r.loops;
+        uint32_t v = a;
+        while (!seen[v]) {
+            seen[v] = 1;
+            v = next.at(v);
+        }
+    }
+    r.chi = r.V - r.E + r.F;
+    r.genus = (2 - r.chi - r.loops) / 2;
+    if ((2 - r.chi - r.loops) % 2 != 0) r.problem = "odd 2 - chi - b";
+    if (r.components != 1) r.problem = "not edge-connected";
+    return r;
+}
+
+/// 6 x signed volume (closed meshes: > 0 when outward).
+double signed_volume6(const TriangleSoup& s) {
+    double vol = 0;
+    for (const Triangle& t : s.triangles) {
+        const Point3 &a = s.points[t[0]], &b = s.points[t[1]], &c = s.points[t[2]];
+        vol += a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
+               a[2] * (b[0] * c[1] - b[1] * c[0]);
+    }
+    return vol;
+}
+
+/// Minimum of 2 x signed area in the xy plane over faces (planar meshes: > 0 when CCW up).
+double min_signed_area2(const TriangleSoup& s) {
+    double m = 1e300;
+    for (const Triangle& t : s.triangles) {
+        const Point3 &a = s.points[t[0]], &b = s.points[t[1]], &c = s.points[t[2]];
+        m = std::min(m, (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]));
+    }
+    return m;
+}
+
+struct Expect {
+    long long V, F, chi, loops, genus;
+};
+
+void check_topology(const TriangleSoup& s, const Expect& e, const std::string& what) {
+    SCOPED_TRACE(what);
+    const Topology t = analyze(s);
+    ASSERT_EQ(t.problem, "");
+    EXPECT_FALSE(t.unreferenced);
+    EXPECT_EQ(t.V, e.V);
+    EXPECT_EQ(t.F, e.F);
+    EXPECT_EQ(t.chi, e.chi);
+    EXPECT_EQ(t.loops, e.loops);
+    EXPECT_EQ(t.genus, e.genus);
+    EXPECT_TRUE(s.source_polygon.empty() || s.source_polygon.size() == s.triangles.size());
+    // The library's own mesh core must agree.
+    const Mesh m = Mesh::from_soup(s);
+    EXPECT_NO_THROW(m.validate());
+    EXPECT_EQ(m.num_components(), 1u);
+    EXPECT_EQ(m.euler_characteristic(), e.chi);
+    EXPECT_EQ(m.num_boundary_loops(), static_cast<uint32_t>(e.loops));
+    EXPECT_EQ(m.genus(), e.genus);
+    EXPECT_EQ(m.num_faces(), static_cast<uint32_t>(e.F));
+    EXPECT_EQ(m.num_referenced_vertices(), static_cast<uint32_t>(e.V));
+}
+
+long long pow4(uint32_t s) { return 1LL << (2 * s); }
+
+struct HolesCounts {
+    long long V, F, boundary_edges;
+};
+HolesCounts disk_with_holes_counts(long long k, long long r) {
+    const long long nx = (2 * k + 1) * r, ny = 3 * r;
+    return {(nx + 1) * (ny + 1) - k * (r - 1) * (r - 1), 2 * (nx * ny - k * r * r), 2 * (nx + ny) + 4 * k * r};
+}
+
+}  // namespace
+
+TEST(Generators, SmallPlanar) {
+    check_topology(make_single_triangle(), {3, 1, 1, 1, 0}, "single");
+    check_topology(make_two_triangles(), {4, 2, 1, 1, 0}, "two");
+    for (uint32_t k : {1u, 2u, 3u, 5u, 12u, 40u}) {
+        const TriangleSoup fan = make_fan(k);
+        check_topology(fan, {k + 2, k, 1, 1, 0}, "fan " + std::to_string(k));
+        EXPECT_GT(min_signed_area2(fan), 0);
+        const TriangleSoup cor = make_corridor(k);
+        check_topology(cor, {k + 2, k, 1, 1, 0}, "corridor " + std::to_string(k));
+        EXPECT_GT(min_signed_area2(cor), 0);
+    }
+    EXPECT_GT(min_signed_area2(make_single_triangle()), 0);
+    EXPECT_GT(min_signed_area2(make_two_triangles()), 0);
+}
+
+TEST(Generators, GridAnnulusHoles) {
+    for (uint32_t nx : {1u, 2u, 5u})
+        for (uint32_t ny : {1u, 3u, 4u}) {
+            const TriangleSoup s = make_grid_disk(nx, ny);
+            check_topology(s, {(nx + 1LL) * (ny + 1), 2LL * nx * ny, 1, 1, 0}, "grid");
+            EXPECT_GT(min_signed_area2(s), 0);
+        }
+    for (uint32_t na : {3u, 4u, 9u})
+        for (uint32_t nr : {1u, 2u, 5u}) {
+            const TriangleSoup s = make_annulus(na, nr);
+            check_topology(s, {na * (nr + 1LL), 2LL * na * nr, 0, 2, 0}, "annulus");
+            EXPECT_GT(min_signed_area2(s), 0);
+        }
+    for (uint32_t k : {0u, 1u, 2u, 5u})
+        for (uint32_t r : {1u, 2u, 3u}) {
+            const TriangleSoup s = make_disk_with_holes(k, r);
+            const HolesCounts c = disk_with_holes_counts(k, r);
+            check_topology(s, {c.V, c.F, 1 - static_cast<long long>(k), k + 1LL, 0},
+                           "holes " + std::to_string(k) + " r" + std::to_string(r));
+            EXPECT_GT(min_signed_area2(s), 0);
+        }
+}
+
+TEST(Generators, ClosedSurfaces) {
+    for (uint32_t sub : {0u, 1u, 2u, 3u}) {
+        const TriangleSoup s = make_icosphere(sub);
+        check_topology(s, {10 * pow4(sub) + 2, 20 * pow4(sub), 2, 0, 0}, "icosphere");
+        EXPECT_GT(signed_volume6(s), 0);
+        for (const Point3& p : s.points) EXPECT_NEAR(std::hypot(p[0], p[1], p[2]), 1.0, 1e-12);
+    }
+    for (uint32_t lon : {3u, 8u})
+        for (uint32_t lat : {2u, 3u, 7u}) {
+            const TriangleSoup s = make_uv_sphere(lon, lat);
+            check_topology(s, {lon * (lat - 1LL) + 2, 2LL * lon * (lat - 1), 2, 0, 0}, "uv sphere");
+            EXPECT_GT(signed_volume6(s), 0);
+        }
+    for (uint32_t a : {3u, 4u, 16u})
+        for (uint32_t b : {3u, 7u}) {
+            const TriangleSoup s = make_torus(a, b);
+            check_topology(s, {1LL * a * b, 2LL * a * b, 0, 0, 1}, "torus");
+            EXPECT_GT(signed_volume6(s), 0);
+        }
+}
+
+TEST(Generators, GenusSurfaces) {
+    for (uint32_t g : {0u, 1u, 2u, 3u, 6u})
+        for (uint32_t r : {1u, 2u, 4u}) {
+            const TriangleSoup s = make_genus_surface(g, r);
+            const HolesCounts c = disk_with_holes_counts(g, r);
+            check_topology(s, {2 * c.V, 2 * c.F + 2 * c.boundary_edges, 2 - 2LL * g, 0, g},
+                           "genus " + std::to_string(g) + " r" + std::to_string(r));
+            EXPECT_GT(signed_volume6(s), 0);
+        }
+    for (uint32_t g : {0u, 1u, 2u, 4u})
+        for (uint32_t h : {0u, 1u, 3u, 7u}) {
+            const uint32_t r = 3;
+            const TriangleSoup s = make_genus_with_holes(g, h, r);
+            const HolesCounts c = disk_with_holes_counts(g, r);
+            check_topology(s, {2 * c.V, 2 * c.F + 2 * c.boundary_edges - h, 2 - 2LL * g - h, h, g},
+                           "genus " + std::to_string(g) + " holes " + std::to_string(h));
+        }
+    EXPECT_THROW(make_genus_with_holes(0, 1000, 1), RequestError);
+}
+
+TEST(Generators, BuiltinModel) {
+    const TriangleSoup s = make_builtin_model();
+    check_topology(s, {1854, 3712, -2, 0, 2}, "builtin");
+    EXPECT_GT(signed_volume6(s), 0);
+}
+
+TEST(Generators, MoebiusIsRejected) {
+    for (uint32_t n : {3u, 4u, 10u}) {
+        const TriangleSoup s = make_moebius_soup(n);
+        EXPECT_EQ(s.triangles.size(), 2u * n);
+        EXPECT_EQ(s.points.size(), 2u * n);
+        EXPECT_EQ(analyze(s).problem, "edge used twice in one direction");
+        EXPECT_THROW(Mesh::from_soup(s), InputError);
+    }
+}
+
+TEST(Generators, CheckerCatchesBrokenSoups) {
+    // The checker itself must see the defects the generators are claimed not to have.
+    TriangleSoup bowtie;
+    bowtie.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, -1, 0}};
+    bowtie.triangles = {{0, 1, 2}, {0, 3, 4}};
+    EXPECT_EQ(analyze(bowtie).problem, "non-manifold vertex 0");
+    TriangleSoup flipped = make_grid_disk(2, 2);
+    std::swap(flipped.triangles[3][0], flipped.triangles[3][1]);
+    EXPECT_EQ(analyze(flipped).problem, "edge used twice in one direction");
+    TriangleSoup two = make_grid_disk(1, 1);
+    TriangleSoup apart = two;
+    for (Triangle t : two.triangles) apart.triangles.push_back({t[0] + 4, t[1] + 4, t[2] + 4});
+    apart.points.insert(apart.points.end(), two.points.begin(), two.points.end());
+    EXPECT_EQ(analyze(apart).problem, "not edge-connected");
+}
+
+TEST(Generators, BadParametersThrow) {
+    EXPECT_THROW(make_fan(0), RequestError);
+    EXPECT_THROW(make_corridor(0), RequestError);
+    EXPECT_THROW(make_grid_disk(0, 3), RequestError);
+    EXPECT_THROW(make_annulus(2, 1), RequestError);
+    EXPECT_THROW(make_disk_with_holes(1, 0), RequestError);
+    EXPECT_THROW(make_icosphere(11), RequestError);
+    EXPECT_THROW(make_uv_sphere(2, 5), RequestError);
+    EXPECT_THROW(make_torus(3, 2), RequestError);
+    EXPECT_THROW(make_moebius_soup(2), RequestError);
+}
+
+TEST(Generators, RandomFlipsKeepTopology) {
+    struct Base {
+        std::string name;
+        std::function<TriangleSoup()> make;
+    };
+    const std::vector<Base> bases = {
+        {"grid", [] { return make_grid_disk(6, 5); }},
+        {"annulus", [] { return make_annulus(9, 3); }},
+        {"holes", [] { return make_disk_with_holes(2, 2); }},
+        {"icosphere", [] { return make_icosphere(1); }},
+        {"torus", [] { return make_torus(8, 5); }},
+        {"genus3", [] { return make_genus_surface(3, 1); }},
+        {"genus2holes", [] { return make_genus_with_holes(2, 3, 2); }},
+    };
+    size_t total_flips = 0;
+    for (const Base& base : bases) {
+        const TriangleSoup original = base.make();
+        const Topology before = analyze(original);
+        ASSERT_EQ(before.problem, "");
+        for (uint64_t seed = 0; seed < 60; ++seed) {
+            TriangleSoup s = original;
+            const size_t count = 1 + seed * 3;
+            const size_t done = random_edge_flips(s, count, seed);
+            EXPECT_LE(done, count);
+            total_flips += done;
+            check_topology(s, {before.V, before.F, before.chi, before.loops, before.genus},
+                           base.name + " flips seed " + std::to_string(seed));
+            TriangleSoup again = original;
+            random_edge_flips(again, count, seed);
+            EXPECT_EQ(again.triangles, s.triangles) << "deterministic for a seed";
+        }
+    }
+    EXPECT_GT(total_flips, 1000u);  // the flips actually happen
+}
+
+TEST(Generators, RandomHolesKeepTopology) {
+    for (uint64_t seed = 0; seed < 200; ++seed) {
+        const uint32_t g = static_cast<uint32_t>(seed % 4);
+        TriangleSoup s = make_genus_surface(g, 2);
+        random_edge_flips(s, 50, seed * 7 + 1);
+        const Topology before = analyze(s);
+        ASSERT_EQ(before.problem, "");
+        const size_t k = 1 + seed % 6;
+        remove_random_faces_as_holes(s, k, seed);
+        const long long kk = static_cast<long long>(k);
+        check_topology(s, {before.V, before.F - kk, before.chi - kk, before.loops + kk, before.genus},
+                       "holes seed " + std::to_string(seed));
+        // Holes in a mesh that already has boundaries.
+        TriangleSoup d = make_disk_with_holes(1, 4);
+        const Topology bd = analyze(d);
+        remove_random_faces_as_holes(d, 2, seed);
+        check_topology(d, {bd.V, bd.F - 2, bd.chi - 2, bd.loops + 2, 0}, "disk holes seed " + std::to_string(seed));
+    }
+    TriangleSoup tiny = make_two_triangles();
+    EXPECT_THROW(remove_random_faces_as_holes(tiny, 1, 1), RequestError);
+}
