@@ -45,6 +45,13 @@ struct PrepareOptions {
 ///        an error. Complexity O(F log F).
 TriangleSoup prepare_soup(TriangleSoup soup, const PrepareOptions& opt, const std::string& filename_for_messages);
 
+/// Flips faces so that every component is consistently oriented, keeping the orientation of
+/// each component's lowest-numbered face (flipping (a,b,c) gives (a,c,b)). Faces that are out of
+/// range or repeat a vertex are left alone; orientation propagates only across edges with
+/// exactly two faces. Returns the number of faces flipped, or -1 (soup unchanged) if some
+/// component is not orientable. Complexity O(F log F).
+long long orient_soup(TriangleSoup& soup);
+
 /// Throws like prepare_soup() without re-orienting; convenience for callers with a soup.
 void validate_soup(const TriangleSoup& soup, const std::string& filename_for_messages);
 

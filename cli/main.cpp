@@ -1,0 +1,336 @@
+// singlestrip command line tool: info, strip, verify.
+//
+// Exit codes (errors.hpp): 0 ok; 2 bad command line; 3 bad input (file or mesh; also `info` on
+// a mesh that is not valid for stripping); 4 request cannot be met; 5 verification failed;
+// 6 internal error; 7 output could not be written. Errors print "singlestrip: error: <message>".
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <new>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "singlestrip/encode.hpp"
+#include "singlestrip/errors.hpp"
+#include "singlestrip/generators.hpp"
+#include "singlestrip/io.hpp"
+#include "singlestrip/mesh.hpp"
+#include "singlestrip/strip.hpp"
+#include "singlestrip/validate.hpp"
+#include "singlestrip/verify.hpp"
+
+namespace ss = singlestrip;
+using json = nlohmann::json;
+
+namespace {
+
+constexpr const char* kBuiltinPrefix = "builtin:";
+constexpr const char* kBuiltinName = "builtin:genus2";
+
+class Stopwatch {
+public:
+    double lap() {
+        const auto now = std::chrono::steady_clock::now();
+        const double s = std::chrono::duration<double>(now - start_).count();
+        start_ = now;
+        return s;
+    }
+
+private:
+    std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+};
+
+bool is_builtin(const std::string& input) { return input.rfind(kBuiltinPrefix, 0) == 0; }
+
+/// Reads INPUT: a mesh file, or `builtin:genus2` (the demo model of generators.hpp).
+ss::TriangleSoup load_input(const std::string& input) {
+    if (is_builtin(input)) {
+        if (input != kBuiltinName)
+            throw ss::RequestError("unknown built-in model '" + input + "' (available: " + kBuiltinName + ")");
+        return ss::make_builtin_model();
+    }
+    return ss::read_mesh_file(input);
+}
+
+std::string yes_no(bool b) { return b ? "yes" : "no"; }
+
+json info_json(const std::string& input, const ss::MeshInfo& m, long long flipped) {
+    json j;
+    j["file"] = input;
+    j["vertices"] = m.vertices;
+    j["referenced_vertices"] = m.referenced_vertices;
+    j["faces"] = m.faces;
+    j["polygons"] = m.polygons;
+    j["edges"] = m.edges;
+    j["boundary_edges"] = m.boundary_edges;
+    j["non_manifold_edges"] = m.non_manifold_edges;
+    j["components"] = m.components;
+    j["component_sizes"] = m.component_sizes;
+    j["boundary_loops"] = m.boundary_loops;
+    j["euler_characteristic"] = m.euler_characteristic;
+    j["genus"] = m.genus_valid ? json(m.genus) : json(nullptr);
+    j["orientable"] = m.orientable;
+    j["oriented"] = m.oriented;
+    if (flipped >= 0) j["faces_flipped_by_orient"] = flipped;
+    j["valid"] = m.valid();
+    json ps = json::array();
+    for (const auto& p : m.problems) ps.push_back({{"kind", p.kind}, {"message", p.message}});
+    j["problems"] = ps;
+    return j;
+}
+
+std::string info_text(const std::string& input, const ss::MeshInfo& m, long long flipped) {
+    std::ostringstream o;
+    o << "file:                 " << input << '\n'
+      << "vertices:             " << m.vertices << " (" << m.referenced_vertices << " referenced)\n"
+      << "faces:                " << m.faces << " triangles";
+    if (m.polygons != m.faces) o << " (from " << m.polygons << " polygons, fan-triangulated)";
+    o << '\n'
+      << "edges:                " << m.edges << " (" << m.boundary_edges << " boundary, " << m.non_manifold_edges << " non-manifold)\n"
+      << "components:           " << m.components;
+    if (m.components > 1) {
+        o << " (faces:";
+        for (std::size_t i = 0; i < m.component_sizes.size() && i < 10; ++i) o << ' ' << m.component_sizes[i];
+        if (m.component_sizes.size() > 10) o << " ...";
+        o << ')';
+    }
+    o << '\n'
+      << "boundary loops:       " << m.boundary_loops << '\n'
+      << "Euler characteristic: " << m.euler_characteristic << '\n'
+      << "genus:                " << (m.genus_valid ? std::to_string(m.genus) : std::string("n/a (not a manifold orientable surface)")) << '\n'
+      << "orientable:           " << yes_no(m.orientable) << '\n'
+      << "consistently oriented:" << ' ' << yes_no(m.oriented);
+    if (flipped >= 0) o << " (after --orient flipped " << flipped << " faces)";
+    o << '\n';
+    if (m.problems.empty()) {
+        o << "problems:             none\nvalid for stripping:  yes\n";
+    } else {
+        o << "problems:             " << m.problems.size() << '\n';
+        for (const auto& p : m.problems) o << "  [" << p.kind << "] " << p.message << '\n';
+        o << "valid for stripping:  no\n";
+    }
+    return o.str();
+}
+
+int run_info(const std::string& input, bool as_json, bool orient) {
+    ss::TriangleSoup soup = load_input(input);
+    long long flipped = -1;
+    if (orient) flipped = ss::orient_soup(soup);  // -1: not orientable, reported as a problem
+    const ss::MeshInfo m = ss::mesh_info(soup);
+    if (as_json)
+        std::cout << info_json(input, m, orient ? flipped : -1).dump(2) << '\n';
+    else
+        std::cout << info_text(input, m, orient ? flipped : -1);
+    return m.valid() ? ss::kExitOk : ss::kExitBadInput;
+}
+
+struct StripArgs {
+    std::string input, output;
+    std::optional<std::string> indices, report, constraints, cycles;
+    std::optional<uint32_t> seed_face, source, target;
+    bool no_greedy = false, orient = false;
+};
+
+/// Removes the files this run has finished if a later step fails, so no partial set of outputs
+/// is left behind (each single file is already written atomically).
+class OutputSet {
+public:
+    void done(const std::string& path) { written_.push_back(path); }
+    void commit() { written_.clear(); }
+    ~OutputSet() {
+        for (const auto& p : written_) {
+            std::error_code ec;
+            std::filesystem::remove(p, ec);
+        }
+    }
+
+private:
+    std::vector<std::string> written_;
+};
+
+int run_strip(const StripArgs& a) {
+    ss::output_format_for(a.output);  // unknown extension: RequestError before any work
+    if (a.cycles)
+        throw ss::RequestError("--cycles: writing fundamental cycles is not available in this build (no cycle extractor API yet)");
+    Stopwatch clock;
+    ss::TriangleSoup soup = load_input(a.input);
+    const double t_read = clock.lap();
+    const std::string label = is_builtin(a.input) ? a.input : a.input;
+    soup = ss::prepare_soup(std::move(soup), ss::PrepareOptions{a.orient}, label);
+
+    ss::StripOptions opt;
+    opt.seed_face = a.seed_face;
+    opt.greedy = !a.no_greedy;
+    opt.source = a.source;
+    opt.target = a.target;
+    if (a.constraints) opt.constraint_edges = ss::read_constraints(*a.constraints, static_cast<uint32_t>(soup.points.size()));
+    clock.lap();
+    ss::Mesh mesh = ss::Mesh::from_soup(soup);
+    const double t_build = clock.lap();
+    ss::StripResult result = ss::build_strip(std::move(mesh), opt);
+    ss::StripArrays arrays = ss::strip_arrays(result);
+    const std::vector<uint32_t> indices = ss::encode_triangle_strip(arrays.faces);
+    const double t_strip = clock.lap();
+
+    OutputSet outputs;
+    ss::write_strip_mesh(a.output, arrays.points, arrays.faces, arrays.parent);
+    outputs.done(a.output);
+    if (a.indices) {
+        ss::write_indices(*a.indices, indices);
+        outputs.done(*a.indices);
+    }
+    const double t_write_files = clock.lap();
+
+    const auto& st = result.stats;
+    const double in_tris = st.input_triangles ? static_cast<double>(st.input_triangles) : 1.0;
+    json r;
+    r["input"] = a.input;
+    r["output"] = a.output;
+    r["input_triangles"] = st.input_triangles;
+    r["output_triangles"] = st.output_triangles;
+    r["splits"] = st.splits;
+    r["swaps"] = st.swaps;
+    r["strip_indices"] = indices.size();
+    r["genus"] = st.genus;
+    r["boundary_loops"] = st.boundary_loops;
+    r["fundamental_triangles"] = st.fundamental_triangles;
+    r["deferred_regions"] = st.deferred_regions;
+    r["indices_per_triangle"] = static_cast<double>(indices.size()) / in_tris;
+    r["extra_percent"] = 100.0 * (static_cast<double>(st.output_triangles) - static_cast<double>(st.input_triangles)) / in_tris;
+    r["options"] = {{"greedy", opt.greedy}, {"orient", a.orient}, {"constraint_edges", opt.constraint_edges.size()}};
+    if (a.seed_face) r["options"]["seed_face"] = *a.seed_face;
+    if (a.source) r["options"]["source"] = *a.source;
+    if (a.target) r["options"]["target"] = *a.target;
+    // "write" covers the mesh and index files; the report itself is written after measuring.
+    r["seconds"] = {{"read", t_read}, {"build", t_build}, {"strip", t_strip}, {"write", t_write_files}};
+    if (a.report) {
+        ss::write_text_atomic(*a.report, r.dump(2) + "\n");
+        outputs.done(*a.report);
+    }
+    outputs.commit();
+
+    char line[512];
+    std::snprintf(line, sizeof line,
+                  "singlestrip: %s: %u -> %u triangles (%+.1f%%, %u splits), 1 strip of %zu indices (%.3f per input triangle), "
+                  "genus %lld, %u boundary loops; read %.3fs build %.3fs strip %.3fs write %.3fs\n",
+                  a.input.c_str(), st.input_triangles, st.output_triangles, r["extra_percent"].get<double>(), st.splits, indices.size(),
+                  r["indices_per_triangle"].get<double>(), st.genus, st.boundary_loops, t_read, t_build, t_strip, t_write_files);
+    std::cerr << line;
+    return ss::kExitOk;
+}
+
+struct VerifyArgs {
+    std::string input, output;
+    std::optional<std::string> indices, constraints, cycles;
+    std::optional<uint32_t> source, target;
+};
+
+int run_verify(const VerifyArgs& a) {
+    ss::VerifyReport rep;
+    if (is_builtin(a.input)) {
+        // The built-in model has no file: assemble what verify_files() would read.
+        ss::TriangleSoup in = load_input(a.input);
+        ss::OutputMesh out = ss::read_output_mesh(a.output);
+        ss::VerifyInput vi;
+        vi.in_points = std::move(in.points);
+        vi.in_faces = std::move(in.triangles);
+        vi.out_points = std::move(out.points);
+        vi.out_faces = std::move(out.faces);
+        vi.out_parent = std::move(out.parent);
+        if (a.indices) vi.indices = ss::read_index_file(*a.indices);
+        if (a.constraints) vi.constraints = ss::read_constraints(*a.constraints, static_cast<uint32_t>(vi.in_points.size()));
+        vi.source = a.source;
+        vi.target = a.target;
+        if (a.cycles) vi.cycles = ss::read_cycles_file(*a.cycles);
+        rep = ss::verify(vi);
+    } else {
+        ss::VerifyFileOptions o;
+        o.indices_path = a.indices;
+        o.constraints_path = a.constraints;
+        o.source = a.source;
+        o.target = a.target;
+        o.cycles_path = a.cycles;
+        rep = ss::verify_files(a.input, a.output, o);
+    }
+    std::cout << rep.to_string();
+    if (!rep.to_string().empty() && rep.to_string().back() != '\n') std::cout << '\n';
+    return rep.ok() ? ss::kExitOk : ss::kExitVerifyFailed;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"singlestrip: one triangle strip for an oriented 2-manifold triangle mesh"};
+    app.require_subcommand(1);
+    app.set_version_flag("--version", "singlestrip 0.1.0");
+    app.footer(
+        "INPUT is a .obj, .off, .ply or .stl file, or builtin:genus2 (the demo model).\n"
+        "Exit codes: 0 ok, 2 usage, 3 bad input, 4 request cannot be met, 5 verification failed,\n"
+        "6 internal error, 7 output not written.");
+
+    std::string info_input;
+    bool info_json_flag = false, info_orient = false;
+    auto* info = app.add_subcommand("info", "Report counts, topology and every problem of a mesh (exit 3 if not valid for stripping)");
+    info->add_option("INPUT", info_input, "Input mesh file or builtin:genus2")->required();
+    info->add_flag("--json", info_json_flag, "Machine-readable JSON output");
+    info->add_flag("--orient", info_orient, "Consistently re-orient an orientable mesh before reporting");
+
+    StripArgs sa;
+    auto* strip = app.add_subcommand("strip", "Turn the mesh into one triangle strip");
+    strip->add_option("INPUT", sa.input, "Input mesh file or builtin:genus2")->required();
+    strip->add_option("-o,--output", sa.output, "Output mesh (.ply binary with parent, .obj, .off), faces in strip order")->required();
+    strip->add_option("--indices", sa.indices, "Write the GL_TRIANGLE_STRIP index sequence (text)");
+    strip->add_option("--report", sa.report, "Write a JSON report");
+    strip->add_option("--seed-face", sa.seed_face, "Input face to start the strip from");
+    strip->add_flag("--no-greedy", sa.no_greedy, "Use the paper's plain same-direction turn rule");
+    strip->add_flag("--orient", sa.orient, "Consistently re-orient an orientable mesh first");
+    strip->add_option("--constraints", sa.constraints, "Edges the strip must not cross: one polyline of vertex indices per line");
+    strip->add_option("--source", sa.source, "The strip starts at a face incident to this input vertex");
+    strip->add_option("--target", sa.target, "The strip ends at a face incident to this input vertex");
+    strip->add_option("--cycles", sa.cycles, "Write fundamental cycles as JSON");
+
+    VerifyArgs va;
+    auto* verify = app.add_subcommand("verify", "Independently check a strip output against its input (exit 5 on failure)");
+    verify->add_option("IN", va.input, "Input mesh file (or builtin:genus2)")->required();
+    verify->add_option("OUT", va.output, "Output mesh written by `singlestrip strip`")->required();
+    verify->add_option("--indices", va.indices, "GL_TRIANGLE_STRIP index file to check against OUT");
+    verify->add_option("--constraints", va.constraints, "Constraint polylines the strip must respect");
+    verify->add_option("--source", va.source, "Required first-face vertex");
+    verify->add_option("--target", va.target, "Required last-face vertex");
+    verify->add_option("--cycles", va.cycles, "Cycles JSON to check for independence");
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForVersion& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        app.exit(e);
+        return ss::kExitUsage;
+    }
+
+    try {
+        if (info->parsed()) return run_info(info_input, info_json_flag, info_orient);
+        if (strip->parsed()) return run_strip(sa);
+        if (verify->parsed()) return run_verify(va);
+        return ss::kExitUsage;
+    } catch (const ss::Error& e) {
+        std::cerr << "singlestrip: error: " << e.what() << '\n';
+        return e.exit_code();
+    } catch (const std::bad_alloc&) {
+        std::cerr << "singlestrip: error: out of memory\n";
+        return ss::kExitInternal;
+    } catch (const std::exception& e) {
+        std::cerr << "singlestrip: error: internal: " << e.what() << '\n';
+        return ss::kExitInternal;
+    }
+}

@@ -1,0 +1,144 @@
+// Output writers. Every file is written to a temporary next to the target and renamed into
+// place only after a successful flush and close, so a failure never leaves a partial output.
+#include <algorithm>
+#include <bit>
+#include <cctype>
+#include <cerrno>
+#include <charconv>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <string>
+
+#include "singlestrip/errors.hpp"
+#include "singlestrip/io.hpp"
+
+namespace singlestrip {
+namespace {
+
+/// Writes through `fill(std::ofstream&)` into "<path>.tmp-XXXX" and renames it to `path`.
+template <class Fill>
+void write_atomically(const std::string& path, Fill&& fill) {
+    namespace fs = std::filesystem;
+    const fs::path target(path);
+    if (fs::is_directory(target)) throw OutputError(path + ": is a directory");
+    std::random_device rd;
+    const fs::path tmp = target.string() + ".tmp-" + std::to_string(rd() % 1000000u);
+    try {
+        {
+            std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+            if (!out) throw OutputError(path + ": cannot create output file (" + std::strerror(errno) + ")");
+            fill(out);
+            out.flush();
+            if (!out) throw OutputError(path + ": write failed (" + std::strerror(errno) + ")");
+            out.close();
+            if (out.fail()) throw OutputError(path + ": write failed on close");
+        }
+        std::error_code ec;
+        fs::rename(tmp, target, ec);
+        if (ec) throw OutputError(path + ": cannot move the finished file into place (" + ec.message() + ")");
+    } catch (...) {
+        std::error_code ec;
+        fs::remove(tmp, ec);
+        throw;
+    }
+}
+
+void put_double(std::ostream& out, double v) {
+    char buf[64];
+    // Shortest round-trip representation: the coordinates read back bit-exact.
+    auto res = std::to_chars(buf, buf + sizeof buf, v);
+    out.write(buf, res.ptr - buf);
+}
+
+template <class T>
+void put_le(std::ostream& out, T v) {
+    static_assert(std::is_trivially_copyable_v<T>);
+    unsigned char b[sizeof(T)];
+    std::memcpy(b, &v, sizeof(T));
+    if constexpr (std::endian::native == std::endian::big) std::reverse(b, b + sizeof(T));
+    out.write(reinterpret_cast<const char*>(b), sizeof(T));
+}
+
+}  // namespace
+
+OutputFormat output_format_for(const std::string& path) {
+    std::string ext = std::filesystem::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (ext == ".ply") return OutputFormat::Ply;
+    if (ext == ".obj") return OutputFormat::Obj;
+    if (ext == ".off") return OutputFormat::Off;
+    throw RequestError(path + ": unknown output format '" + ext + "' (expected .ply, .obj or .off)");
+}
+
+void write_strip_mesh(const std::string& path, const std::vector<Point3>& points, const std::vector<Triangle>& faces,
+                      const std::vector<uint32_t>& parent) {
+    const OutputFormat fmt = output_format_for(path);
+    if (parent.size() != faces.size())
+        throw InternalError("write_strip_mesh: " + std::to_string(faces.size()) + " faces but " + std::to_string(parent.size()) + " parents");
+    for (std::size_t f = 0; f < faces.size(); ++f)
+        for (uint32_t v : faces[f])
+            if (v >= points.size()) throw InternalError("write_strip_mesh: face " + std::to_string(f) + " references vertex " + std::to_string(v) +
+                                                        " of " + std::to_string(points.size()));
+    write_atomically(path, [&](std::ofstream& out) {
+        switch (fmt) {
+            case OutputFormat::Ply: {
+                out << "ply\nformat binary_little_endian 1.0\ncomment singlestrip: faces in strip order; parent = input triangle\n"
+                    << "element vertex " << points.size() << "\nproperty double x\nproperty double y\nproperty double z\n"
+                    << "element face " << faces.size() << "\nproperty list uchar uint vertex_indices\nproperty uint parent\nend_header\n";
+                for (const auto& p : points)
+                    for (double c : p) put_le(out, c);
+                for (std::size_t f = 0; f < faces.size(); ++f) {
+                    put_le<uint8_t>(out, 3);
+                    for (uint32_t v : faces[f]) put_le(out, v);
+                    put_le(out, parent[f]);
+                }
+                break;
+            }
+            case OutputFormat::Obj: {
+                out << "# singlestrip: faces in strip order\n";
+                for (const auto& p : points) {
+                    out << "v ";
+                    put_double(out, p[0]);
+                    out << ' ';
+                    put_double(out, p[1]);
+                    out << ' ';
+                    put_double(out, p[2]);
+                    out << '\n';
+                }
+                for (const auto& t : faces) out << "f " << t[0] + 1ull << ' ' << t[1] + 1ull << ' ' << t[2] + 1ull << '\n';
+                break;
+            }
+            case OutputFormat::Off: {
+                out << "OFF\n" << points.size() << ' ' << faces.size() << " 0\n";
+                for (const auto& p : points) {
+                    put_double(out, p[0]);
+                    out << ' ';
+                    put_double(out, p[1]);
+                    out << ' ';
+                    put_double(out, p[2]);
+                    out << '\n';
+                }
+                for (const auto& t : faces) out << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
+                break;
+            }
+        }
+    });
+}
+
+void write_indices(const std::string& path, const std::vector<uint32_t>& indices) {
+    write_atomically(path, [&](std::ofstream& out) {
+        for (std::size_t i = 0; i < indices.size(); ++i) {
+            out << indices[i];
+            out << ((i % 16 == 15 || i + 1 == indices.size()) ? '\n' : ' ');
+        }
+    });
+}
+
+void write_text_atomic(const std::string& path, std::string_view text) {
+    write_atomically(path, [&](std::ofstream& out) { out.write(text.data(), static_cast<std::streamsize>(text.size())); });
+}
+
+}  // namespace singlestrip

@@ -1,0 +1,365 @@
+// Structural diagnosis of a triangle soup: one pass over edges grouped by their vertex pair
+// (CSR by smaller vertex, no hash maps), union-find for components and vertex fans, and BFS
+// orientation propagation over manifold edges.
+#include "singlestrip/validate.hpp"
+
+#include <algorithm>
+#include <memory>
+#include <numeric>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "singlestrip/errors.hpp"
+
+namespace singlestrip {
+namespace {
+
+constexpr uint32_t kNo = 0xffffffffu;
+constexpr std::size_t kMaxPerKind = 10;  // listed problems per kind; the rest are counted
+
+struct UnionFind {
+    std::vector<uint32_t> parent;
+    explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
+    uint32_t find(uint32_t x) {
+        while (parent[x] != x) {
+            parent[x] = parent[parent[x]];
+            x = parent[x];
+        }
+        return x;
+    }
+    void unite(uint32_t a, uint32_t b) {
+        a = find(a);
+        b = find(b);
+        if (a != b) parent[std::max(a, b)] = std::min(a, b);
+    }
+};
+
+std::string edge_name(uint32_t a, uint32_t b) { return "edge (" + std::to_string(a) + ", " + std::to_string(b) + ")"; }
+
+/// Collects problems of one kind, keeping the first kMaxPerKind messages.
+struct ProblemList {
+    explicit ProblemList(std::string k) : kind(std::move(k)) {}
+    std::string kind;
+    std::vector<std::string> messages;
+    std::size_t total = 0;
+    void add(std::string m) {
+        if (messages.size() < kMaxPerKind) messages.push_back(std::move(m));
+        ++total;
+    }
+    void emit(std::vector<SoupProblem>& out) const {
+        for (const auto& m : messages) out.push_back({kind, m});
+        if (total > messages.size())
+            out.push_back({kind, "... and " + std::to_string(total - messages.size()) + " more " + kind + " problems"});
+    }
+};
+
+/// Everything diagnose_soup, mesh_info and prepare_soup need, computed once.
+struct Analysis {
+    const TriangleSoup& soup;
+    std::size_t nf = 0, nv = 0;
+    std::vector<char> usable;        // face in range and with three distinct vertices
+    std::vector<uint32_t> twin;      // half-edge 3f+k -> its partner on a 2-face edge, else kNo
+    std::vector<uint32_t> comp;      // edge-connected component root per usable face
+    std::vector<int8_t> flip;        // orientation BFS result (1 = flip to be consistent)
+    ProblemList out_of_range{"index_out_of_range"}, repeated{"repeated_vertex"}, duplicate{"duplicate_face"},
+        nm_edge{"non_manifold_edge"}, nm_vertex{"non_manifold_vertex"}, inconsistent{"inconsistent_orientation"},
+        non_orientable{"non_orientable"};
+    uint64_t edges = 0, boundary_edges = 0, non_manifold_edges = 0, referenced = 0, boundary_loops = 0;
+    std::vector<uint64_t> component_sizes;
+    bool orientable = true, oriented = true;
+
+    explicit Analysis(const TriangleSoup& s) : soup(s), nf(s.triangles.size()), nv(s.points.size()) { run(); }
+
+    uint32_t from(uint32_t h) const { return soup.triangles[h / 3][h % 3]; }
+    uint32_t to(uint32_t h) const { return soup.triangles[h / 3][(h % 3 + 1) % 3]; }
+
+    void run() {
+        usable.assign(nf, 1);
+        std::vector<char> used(nv, 0);
+        for (std::size_t f = 0; f < nf; ++f) {
+            const auto& t = soup.triangles[f];
+            for (uint32_t v : t)
+                if (v >= nv) {
+                    out_of_range.add("face " + std::to_string(f) + " references vertex " + std::to_string(v) + " but there are only " +
+                                     std::to_string(nv) + " vertices");
+                    usable[f] = 0;
+                    break;
+                }
+            if (!usable[f]) continue;
+            for (uint32_t v : t) used[v] = 1;
+            if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) {
+                repeated.add("face " + std::to_string(f) + " (" + std::to_string(t[0]) + ", " + std::to_string(t[1]) + ", " +
+                             std::to_string(t[2]) + ") repeats a vertex");
+                usable[f] = 0;
+            }
+        }
+        referenced = static_cast<uint64_t>(std::count(used.begin(), used.end(), 1));
+        find_duplicates();
+        group_edges();
+        find_fans();
+        orient_bfs();
+    }
+
+    void find_duplicates() {
+        std::vector<std::pair<Triangle, uint32_t>> keyed;
+        keyed.reserve(nf);
+        for (std::size_t f = 0; f < nf; ++f) {
+            if (!usable[f]) continue;
+            Triangle t = soup.triangles[f];
+            std::sort(t.begin(), t.end());
+            keyed.push_back({t, static_cast<uint32_t>(f)});
+        }
+        std::sort(keyed.begin(), keyed.end());
+        for (std::size_t i = 0; i < keyed.size();) {
+            std::size_t j = i + 1;
+            while (j < keyed.size() && keyed[j].first == keyed[i].first) ++j;
+            if (j - i > 1) {
+                std::string faces;
+                for (std::size_t k = i; k < j; ++k) faces += (k > i ? ", " : "") + std::to_string(keyed[k].second);
+                const auto& t = keyed[i].first;
+                duplicate.add("faces " + faces + " are duplicates (same vertices " + std::to_string(t[0]) + ", " + std::to_string(t[1]) +
+                              ", " + std::to_string(t[2]) + ")");
+            }
+            i = j;
+        }
+    }
+
+    // Half-edges bucketed by their smaller endpoint, sorted by the larger: equal neighbours form
+    // one undirected edge.
+    void group_edges() {
+        twin.assign(3 * nf, kNo);
+        std::vector<uint32_t> offset(nv + 1, 0);
+        for (std::size_t f = 0; f < nf; ++f)
+            if (usable[f])
+                for (int k = 0; k < 3; ++k) {
+                    auto h = static_cast<uint32_t>(3 * f + static_cast<std::size_t>(k));
+                    ++offset[std::min(from(h), to(h)) + 1];
+                }
+        for (std::size_t v = 0; v < nv; ++v) offset[v + 1] += offset[v];
+        std::vector<uint32_t> bucket(offset[nv]);
+        {
+            std::vector<uint32_t> fill(offset.begin(), offset.end() - 1);
+            for (std::size_t f = 0; f < nf; ++f)
+                if (usable[f])
+                    for (int k = 0; k < 3; ++k) {
+                        auto h = static_cast<uint32_t>(3 * f + static_cast<std::size_t>(k));
+                        bucket[fill[std::min(from(h), to(h))]++] = h;
+                    }
+        }
+        UnionFind faces(nf);
+        corners_ = std::make_unique<UnionFind>(3 * nf);
+        UnionFind bverts(nv);
+        std::vector<char> on_boundary(nv, 0);
+        for (std::size_t v = 0; v < nv; ++v) {
+            auto b = bucket.begin() + offset[v], e = bucket.begin() + offset[v + 1];
+            std::sort(b, e, [&](uint32_t x, uint32_t y) {
+                uint32_t hx = std::max(from(x), to(x)), hy = std::max(from(y), to(y));
+                return hx != hy ? hx < hy : x < y;
+            });
+            for (auto i = b; i != e;) {
+                const uint32_t hi = std::max(from(*i), to(*i));
+                auto j = i + 1;
+                while (j != e && std::max(from(*j), to(*j)) == hi) ++j;
+                on_edge(static_cast<uint32_t>(v), hi, i, j, faces, bverts, on_boundary);
+                i = j;
+            }
+        }
+        comp.assign(nf, kNo);
+        std::vector<uint64_t> size_of_root(nf, 0);
+        for (std::size_t f = 0; f < nf; ++f)
+            if (usable[f]) {
+                comp[f] = faces.find(static_cast<uint32_t>(f));
+                ++size_of_root[comp[f]];
+            }
+        for (uint64_t s : size_of_root)
+            if (s) component_sizes.push_back(s);
+        std::sort(component_sizes.rbegin(), component_sizes.rend());
+        for (std::size_t v = 0; v < nv; ++v)
+            if (on_boundary[v] && bverts.find(static_cast<uint32_t>(v)) == v) ++boundary_loops;
+    }
+
+    uint32_t corner_at(uint32_t h, uint32_t v) const { return from(h) == v ? h : 3 * (h / 3) + (h % 3 + 1) % 3; }
+
+    void on_edge(uint32_t lo, uint32_t hi, std::vector<uint32_t>::iterator b, std::vector<uint32_t>::iterator e, UnionFind& faces,
+                 UnionFind& bverts, std::vector<char>& on_boundary) {
+        ++edges;
+        const auto n = static_cast<std::size_t>(e - b);
+        for (auto i = b + 1; i < e; ++i) {
+            faces.unite(*b / 3, *i / 3);
+            corners_->unite(corner_at(*b, lo), corner_at(*i, lo));
+            corners_->unite(corner_at(*b, hi), corner_at(*i, hi));
+        }
+        if (n == 1) {
+            ++boundary_edges;
+            bverts.unite(lo, hi);
+            on_boundary[lo] = on_boundary[hi] = 1;
+        } else if (n == 2) {
+            twin[b[0]] = b[1];
+            twin[b[1]] = b[0];
+            if (from(b[0]) == from(b[1])) {
+                oriented = false;
+                inconsistent.add(edge_name(lo, hi) + ": faces " + std::to_string(b[0] / 3) + " and " + std::to_string(b[1] / 3) +
+                                 " both run from " + std::to_string(from(b[0])) + " to " + std::to_string(to(b[0])) +
+                                 " (inconsistent orientation)");
+            }
+        } else {
+            ++non_manifold_edges;
+            std::string fs;
+            for (auto i = b; i < e; ++i) fs += (i > b ? ", " : "") + std::to_string(*i / 3);
+            nm_edge.add(edge_name(lo, hi) + " is shared by " + std::to_string(n) + " faces (" + fs + "); at most 2 are allowed");
+        }
+    }
+
+    // A vertex is manifold when all its corners are joined through edges at it into one fan.
+    void find_fans() {
+        std::vector<std::pair<uint32_t, uint32_t>> vertex_root;
+        vertex_root.reserve(3 * nf);
+        for (std::size_t f = 0; f < nf; ++f)
+            if (usable[f])
+                for (int k = 0; k < 3; ++k) {
+                    auto c = static_cast<uint32_t>(3 * f + static_cast<std::size_t>(k));
+                    vertex_root.emplace_back(from(c), corners_->find(c));
+                }
+        corners_.reset();
+        std::sort(vertex_root.begin(), vertex_root.end());
+        vertex_root.erase(std::unique(vertex_root.begin(), vertex_root.end()), vertex_root.end());
+        for (std::size_t i = 0; i < vertex_root.size();) {
+            std::size_t j = i + 1;
+            while (j < vertex_root.size() && vertex_root[j].first == vertex_root[i].first) ++j;
+            if (j - i > 1)
+                nm_vertex.add("vertex " + std::to_string(vertex_root[i].first) + " is where " + std::to_string(j - i) +
+                              " separate fans of faces meet (non-manifold vertex)");
+            i = j;
+        }
+    }
+
+    // BFS from the lowest-numbered face of each component; flip[g] = flip[f] xor (same direction).
+    void orient_bfs() {
+        flip.assign(nf, -1);
+        std::vector<uint32_t> queue;
+        for (std::size_t s = 0; s < nf; ++s) {
+            if (!usable[s] || flip[s] >= 0) continue;
+            flip[s] = 0;
+            queue.assign(1, static_cast<uint32_t>(s));
+            bool conflict = false;
+            for (std::size_t qi = 0; qi < queue.size(); ++qi) {
+                const uint32_t f = queue[qi];
+                for (uint32_t k = 0; k < 3; ++k) {
+                    const uint32_t h = 3 * f + k, t = twin[h];
+                    if (t == kNo) continue;
+                    const uint32_t g = t / 3;
+                    const int8_t want = static_cast<int8_t>(flip[f] ^ (from(h) == from(t) ? 1 : 0));
+                    if (flip[g] < 0) {
+                        flip[g] = want;
+                        queue.push_back(g);
+                    } else if (flip[g] != want && !conflict) {
+                        conflict = true;
+                        orientable = false;
+                        non_orientable.add("the surface containing face " + std::to_string(s) +
+                                           " is not orientable (Moebius-like): orientations propagated from face " + std::to_string(s) +
+                                           " disagree across " + edge_name(std::min(from(h), to(h)), std::max(from(h), to(h))) +
+                                           " between faces " + std::to_string(f) + " and " + std::to_string(g));
+                    }
+                }
+            }
+        }
+        if (!orientable) oriented = false;
+    }
+
+    std::vector<SoupProblem> problems() const {
+        std::vector<SoupProblem> out;
+        if (nf == 0) out.push_back({"no_faces", "the mesh has no faces"});
+        out_of_range.emit(out);
+        repeated.emit(out);
+        duplicate.emit(out);
+        nm_edge.emit(out);
+        nm_vertex.emit(out);
+        inconsistent.emit(out);
+        non_orientable.emit(out);
+        if (component_sizes.size() > 1) {
+            std::string sizes;
+            for (std::size_t i = 0; i < component_sizes.size() && i < kMaxPerKind; ++i)
+                sizes += (i ? ", " : "") + std::to_string(component_sizes[i]);
+            if (component_sizes.size() > kMaxPerKind) sizes += ", ...";
+            out.push_back({"components", "the mesh has " + std::to_string(component_sizes.size()) +
+                                             " edge-connected components (faces per component: " + sizes + "); exactly 1 is required"});
+        }
+        return out;
+    }
+
+    std::unique_ptr<UnionFind> corners_;
+};
+
+std::string join_problems(const std::vector<SoupProblem>& ps, const std::string& filename) {
+    constexpr std::size_t kShown = 5;
+    std::string msg = filename + ": ";
+    for (std::size_t i = 0; i < ps.size() && i < kShown; ++i) msg += (i ? "; " : "") + ps[i].message;
+    if (ps.size() > kShown) msg += " (and " + std::to_string(ps.size() - kShown) + " more problems; run 'singlestrip info' for all)";
+    return msg;
+}
+
+}  // namespace
+
+std::vector<SoupProblem> diagnose_soup(const TriangleSoup& soup) { return Analysis(soup).problems(); }
+
+void validate_soup(const TriangleSoup& soup, const std::string& filename_for_messages) {
+    auto ps = diagnose_soup(soup);
+    if (!ps.empty()) throw InputError(join_problems(ps, filename_for_messages));
+}
+
+long long orient_soup(TriangleSoup& soup) {
+    std::vector<int8_t> flip;
+    {
+        Analysis a(soup);
+        if (!a.orientable) return -1;
+        flip = std::move(a.flip);
+    }
+    long long flipped = 0;
+    for (std::size_t f = 0; f < soup.triangles.size(); ++f)
+        if (flip[f] == 1) {
+            std::swap(soup.triangles[f][1], soup.triangles[f][2]);
+            ++flipped;
+        }
+    return flipped;
+}
+
+TriangleSoup prepare_soup(TriangleSoup soup, const PrepareOptions& opt, const std::string& filename_for_messages) {
+    // A non-orientable soup is left as is: validate_soup() then reports it (and everything else).
+    if (opt.orient) orient_soup(soup);
+    validate_soup(soup, filename_for_messages);
+    return soup;
+}
+
+MeshInfo mesh_info(const TriangleSoup& soup) {
+    Analysis a(soup);
+    MeshInfo info;
+    info.vertices = soup.points.size();
+    info.referenced_vertices = a.referenced;
+    info.faces = soup.triangles.size();
+    if (soup.source_polygon.empty()) {
+        info.polygons = info.faces;
+    } else {
+        std::vector<uint32_t> sp = soup.source_polygon;
+        std::sort(sp.begin(), sp.end());
+        info.polygons = static_cast<uint64_t>(std::unique(sp.begin(), sp.end()) - sp.begin());
+    }
+    info.edges = a.edges;
+    info.boundary_edges = a.boundary_edges;
+    info.non_manifold_edges = a.non_manifold_edges;
+    info.components = a.component_sizes.size();
+    info.component_sizes = a.component_sizes;
+    info.boundary_loops = a.boundary_loops;
+    info.euler_characteristic = static_cast<long long>(a.referenced) - static_cast<long long>(a.edges) + static_cast<long long>(info.faces);
+    info.orientable = a.orientable;
+    info.oriented = a.oriented;
+    info.problems = a.problems();
+    // Genus by chi = 2c - 2g - b, meaningful for a manifold orientable surface.
+    info.genus_valid = a.orientable && a.non_manifold_edges == 0 && a.nm_vertex.total == 0 && info.components >= 1 &&
+                       a.out_of_range.total == 0 && a.repeated.total == 0;
+    if (info.genus_valid)
+        info.genus = (2 * static_cast<long long>(info.components) - info.euler_characteristic - static_cast<long long>(info.boundary_loops)) / 2;
+    return info;
+}
+
+}  // namespace singlestrip
