@@ -1,0 +1,988 @@
+// singlestrip — the independent verifier (see verify.hpp for the list of checks).
+//
+// Independence: this file has its own adjacency (hash maps keyed by vertex pairs), its own
+// strip decoder and its own tree-cotree; it includes nothing from mesh.hpp, strip.hpp or
+// encode.hpp. Geometry is in plain doubles with relative tolerances (kRelTol).
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <map>
+#include <numeric>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <unordered_map>
+#include <unordered_set>
+#include <utility>
+#include <vector>
+
+#include "singlestrip/errors.hpp"
+#include "singlestrip/io.hpp"
+#include "singlestrip/verify.hpp"
+
+namespace singlestrip {
+namespace {
+
+constexpr uint32_t kNo = 0xffffffffu;
+constexpr double kRelTol = 1e-9;
+constexpr size_t kMaxPerCheck = 20;  // failure lines kept per check; the rest are counted
+
+// --- tiny vector algebra ------------------------------------------------------------------
+using V3 = std::array<double, 3>;
+V3 sub(const V3& a, const V3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+V3 crs(const V3& a, const V3& b) {
+    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+double dot(const V3& a, const V3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+double norm(const V3& a) { return std::sqrt(dot(a, a)); }
+
+uint64_t key(uint32_t a, uint32_t b) { return (static_cast<uint64_t>(a) << 32) | b; }
+uint64_t ukey(uint32_t a, uint32_t b) { return a < b ? key(a, b) : key(b, a); }
+
+std::string tri_str(const Triangle& t) {
+    return "(" + std::to_string(t[0]) + "," + std::to_string(t[1]) + "," + std::to_string(t[2]) + ")";
+}
+
+/// Collects failure lines, at most kMaxPerCheck per check name.
+class Failures {
+public:
+    explicit Failures(VerifyReport& r) : r_(r) {}
+    void add(const std::string& check, const std::string& msg) {
+        size_t& n = count_[check];
+        if (++n <= kMaxPerCheck) r_.failures.push_back(check + ": " + msg);
+    }
+    size_t count(const std::string& check) const {
+        auto it = count_.find(check);
+        return it == count_.end() ? 0 : it->second;
+    }
+    void finish() {
+        for (const auto& [check, n] : count_)
+            if (n > kMaxPerCheck)
+                r_.failures.push_back(check + ": " + std::to_string(n - kMaxPerCheck) + " more failures not shown");
+    }
+
+private:
+    VerifyReport& r_;
+    std::map<std::string, size_t> count_;
+};
+
+struct UnionFind {
+    std::vector<uint32_t> p;
+    explicit UnionFind(size_t n) : p(n) { std::iota(p.begin(), p.end(), 0u); }
+    uint32_t find(uint32_t x) {
+        while (p[x] != x) x = p[x] = p[p[x]];
+        return x;
+    }
+    void unite(uint32_t a, uint32_t b) { p[find(a)] = find(b); }
+};
+
+/// Half-edge adjacency of a triangle list, built with a hash map; half-edge h = 3f + i runs
+/// from faces[f][i] to faces[f][(i+1)%3]. Tolerates garbage: problems are recorded, not thrown.
+struct Adjacency {
+    size_t num_points = 0;
+    std::vector<Triangle> faces;
+    std::vector<bool> face_ok;       // indices in range and distinct
+    std::vector<uint32_t> twin;      // kNo on the boundary (or when the edge is broken)
+    std::unordered_map<uint64_t, uint32_t> directed;  // key(from,to) -> half-edge
+    bool manifold = true;            // no repeated directed half-edge, every vertex one fan
+    std::vector<std::string> problems;
+    long long referenced_vertices = 0;
+    long long edges = 0;
+    long long euler = 0;
+    size_t boundary_loops = 0;
+    std::vector<bool> on_boundary;   // per vertex
+
+    uint32_t from(uint32_t h) const { return faces[h / 3][h % 3]; }
+    uint32_t to(uint32_t h) const { return faces[h / 3][(h % 3 + 1) % 3]; }
+};
+
+Adjacency build_adjacency(size_t num_points, const std::vector<Triangle>& faces, const std::string& what) {
+    Adjacency a;
+    a.num_points = num_points;
+    a.faces = faces;
+    const size_t F = faces.size();
+    a.face_ok.assign(F, true);
+    a.twin.assign(3 * F, kNo);
+    a.directed.reserve(3 * F);
+    auto problem = [&](const std::string& s) {
+        a.manifold = false;
+        if (a.problems.size() < kMaxPerCheck) a.problems.push_back(s);
+    };
+    for (size_t f = 0; f < F; ++f) {
+        const Triangle& t = faces[f];
+        bool ok = t[0] < num_points && t[1] < num_points && t[2] < num_points;
+        if (!ok) {
+            problem(what + " face " + std::to_string(f) + " " + tri_str(t) + ": vertex index out of range (" +
+                    std::to_string(num_points) + " vertices)");
+        } else if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) {
+            problem(what + " face " + std::to_string(f) + " " + tri_str(t) + ": repeated vertex");
+            ok = false;
+        }
+        a.face_ok[f] = ok;
+    }
+    // Duplicate triangles (same vertex set, either orientation).
+    {
+        std::unordered_multimap<uint64_t, uint32_t> by_hash;
+        by_hash.reserve(F);
+        for (uint32_t f = 0; f < F; ++f) {
+            if (!a.face_ok[f]) continue;
+            Triangle s = faces[f];
+            std::sort(s.begin(), s.end());
+            const uint64_t h = (static_cast<uint64_t>(s[0]) * 0x9E3779B97F4A7C15ULL) ^ (static_cast<uint64_t>(s[1]) << 21) ^
+                               (static_cast<uint64_t>(s[2]) * 0xC2B2AE3D27D4EB4FULL);
+            auto range = by_hash.equal_range(h);
+            for (auto it = range.first; it != range.second; ++it) {
+                Triangle o = faces[it->second];
+                std::sort(o.begin(), o.end());
+                if (o == s) {
+                    problem(what + " faces " + std::to_string(it->second) + " and " + std::to_string(f) +
+                            " are the same triangle " + tri_str(faces[f]) + " (duplicate face)");
+                    break;
+                }
+            }
+            by_hash.emplace(h, f);
+        }
+    }
+    for (uint32_t f = 0; f < F; ++f) {
+        if (!a.face_ok[f]) continue;
+        for (uint32_t i = 0; i < 3; ++i) {
+            const uint32_t h = 3 * f + i;
+            auto [it, inserted] = a.directed.emplace(key(a.from(h), a.to(h)), h);
+            if (!inserted)
+                problem(what + " edge (" + std::to_string(a.from(h)) + "," + std::to_string(a.to(h)) +
+                        ") is traversed in the same direction by faces " + std::to_string(it->second / 3) + " and " +
+                        std::to_string(f) + " (flipped face, or more than two faces on an edge)");
+        }
+    }
+    for (uint32_t f = 0; f < F; ++f) {
+        if (!a.face_ok[f]) continue;
+        for (uint32_t i = 0; i < 3; ++i) {
+            const uint32_t h = 3 * f + i;
+            auto it = a.directed.find(key(a.to(h), a.from(h)));
+            if (it != a.directed.end() && a.directed.at(key(a.from(h), a.to(h))) == h) a.twin[h] = it->second;
+        }
+    }
+    // Counts: referenced vertices, edges, boundary.
+    std::vector<uint32_t> first_corner(num_points, kNo);
+    a.on_boundary.assign(num_points, false);
+    for (uint32_t f = 0; f < F; ++f) {
+        if (!a.face_ok[f]) continue;
+        for (uint32_t i = 0; i < 3; ++i) {
+            const uint32_t h = 3 * f + i;
+            if (first_corner[a.from(h)] == kNo) {
+                first_corner[a.from(h)] = h;
+                ++a.referenced_vertices;
+            }
+            if (a.twin[h] == kNo) {
+                ++a.edges;
+                a.on_boundary[a.from(h)] = true;
+                a.on_boundary[a.to(h)] = true;
+            } else if (h < a.twin[h]) {
+                ++a.edges;
+            }
+        }
+    }
+    long long valid_faces = 0;
+    for (bool ok : a.face_ok) valid_faces += ok ? 1 : 0;
+    a.euler = a.referenced_vertices - a.edges + valid_faces;
+    // Vertex manifoldness: corners around a vertex joined across shared edges must form one fan.
+    {
+        UnionFind uf(3 * F);
+        for (uint32_t f = 0; f < F; ++f) {
+            if (!a.face_ok[f]) continue;
+            for (uint32_t i = 0; i < 3; ++i) {
+                const uint32_t h = 3 * f + i;  // corner at from(h), outgoing half-edge h
+                const uint32_t t = a.twin[h];
+                if (t != kNo) {
+                    // twin runs to(h)->from(h); its face's corner at from(h) is corner of next(t).
+                    const uint32_t tn = 3 * (t / 3) + (t % 3 + 1) % 3;
+                    uf.unite(h, tn);
+                }
+            }
+        }
+        for (uint32_t f = 0; f < F; ++f) {
+            if (!a.face_ok[f]) continue;
+            for (uint32_t i = 0; i < 3; ++i) {
+                const uint32_t h = 3 * f + i;
+                const uint32_t v = a.from(h);
+                if (uf.find(h) != uf.find(first_corner[v])) {
+                    problem(what + " vertex " + std::to_string(v) +
+                            " is non-manifold (its faces form more than one fan; seen at face " + std::to_string(f) + ")");
+                    // Merge so that each extra fan is reported once.
+                    uf.unite(h, first_corner[v]);
+                }
+            }
+        }
+    }
+    // Boundary loops: components of the boundary-edge graph.
+    {
+        UnionFind uf(num_points);
+        for (uint32_t h = 0; h < 3 * F; ++h)
+            if (a.face_ok[h / 3] && a.twin[h] == kNo) uf.unite(a.from(h), a.to(h));
+        for (uint32_t v = 0; v < num_points; ++v)
+            if (a.on_boundary[v] && uf.find(v) == v) ++a.boundary_loops;
+    }
+    return a;
+}
+
+// --- geometry --------------------------------------------------------------------------------
+
+struct ParentFrame {
+    V3 a, b, c, n;   // corners and unnormalised normal (b-a)x(c-a)
+    double n2 = 0;   // |n|^2
+    double size = 0; // longest edge
+};
+
+ParentFrame frame_of(const std::vector<Point3>& pts, const Triangle& t) {
+    ParentFrame p;
+    p.a = pts[t[0]];
+    p.b = pts[t[1]];
+    p.c = pts[t[2]];
+    p.n = crs(sub(p.b, p.a), sub(p.c, p.a));
+    p.n2 = dot(p.n, p.n);
+    p.size = std::max({norm(sub(p.b, p.a)), norm(sub(p.c, p.b)), norm(sub(p.a, p.c))});
+    return p;
+}
+
+/// Barycentric coordinates of the projection of q onto the parent's plane, and the distance
+/// of q from that plane.
+std::array<double, 3> bary(const ParentFrame& p, const V3& q, double& plane_dist) {
+    const double nn = std::sqrt(p.n2);
+    plane_dist = nn > 0 ? std::abs(dot(sub(q, p.a), p.n)) / nn : std::numeric_limits<double>::infinity();
+    if (!(p.n2 > 0)) return {-1, -1, -1};
+    const double la = dot(crs(sub(p.b, q), sub(p.c, q)), p.n) / p.n2;
+    const double lb = dot(crs(sub(p.c, q), sub(p.a, q)), p.n) / p.n2;
+    return {la, lb, 1.0 - la - lb};
+}
+
+/// Position of q along segment u->v: t in [0,1] when inside; `dist` = distance from the line.
+double seg_param(const V3& u, const V3& v, const V3& q, double& dist) {
+    const V3 d = sub(v, u);
+    const double dd = dot(d, d);
+    if (!(dd > 0)) {
+        dist = norm(sub(q, u));
+        return 0;
+    }
+    const double t = dot(sub(q, u), d) / dd;
+    const V3 foot = {u[0] + t * d[0], u[1] + t * d[1], u[2] + t * d[2]};
+    dist = norm(sub(q, foot));
+    return t;
+}
+
+/// q on the closed segment u-v (within tolerance relative to its length).
+bool on_segment(const V3& u, const V3& v, const V3& q, double* t_out = nullptr) {
+    double dist = 0;
+    const double t = seg_param(u, v, q, dist);
+    const double len = norm(sub(v, u));
+    if (t_out) *t_out = t;
+    return dist <= kRelTol * len && t >= -kRelTol && t <= 1 + kRelTol;
+}
+
+uint32_t common_vertices(const Triangle& a, const Triangle& b, std::array<uint32_t, 3>& out) {
+    uint32_t n = 0;
+    for (uint32_t x : a)
+        if (x == b[0] || x == b[1] || x == b[2]) out[n++] = x;
+    return n;
+}
+
+bool same_cyclic(const Triangle& a, const Triangle& b) {
+    for (int r = 0; r < 3; ++r)
+        if (a[0] == b[r] && a[1] == b[(r + 1) % 3] && a[2] == b[(r + 2) % 3]) return true;
+    return false;
+}
+
+// --- parent inference -------------------------------------------------------------------------
+
+struct InputStars {
+    std::vector<uint32_t> offset, faces;  // CSR: faces around each input vertex
+};
+
+InputStars build_stars(size_t n, const std::vector<Triangle>& in_faces) {
+    InputStars s;
+    s.offset.assign(n + 1, 0);
+    for (const Triangle& t : in_faces)
+        for (uint32_t v : t) ++s.offset[v + 1];
+    for (size_t i = 0; i < n; ++i) s.offset[i + 1] += s.offset[i];
+    s.faces.resize(s.offset[n]);
+    std::vector<uint32_t> fill(s.offset.begin(), s.offset.end() - 1);
+    for (uint32_t f = 0; f < in_faces.size(); ++f)
+        for (uint32_t v : in_faces[f]) s.faces[fill[v]++] = f;
+    return s;
+}
+
+/// Best input face among candidates for point q: the one with the largest minimum barycentric
+/// coordinate among those whose plane passes within tolerance. kNo when none contains q.
+uint32_t best_container(const std::vector<Point3>& in_pts, const std::vector<Triangle>& in_faces,
+                        const std::vector<uint32_t>& cand, const V3& q) {
+    uint32_t best = kNo;
+    double best_min = -std::numeric_limits<double>::infinity();
+    for (uint32_t f : cand) {
+        const ParentFrame p = frame_of(in_pts, in_faces[f]);
+        double dist = 0;
+        const auto l = bary(p, q, dist);
+        if (!(dist <= kRelTol * p.size)) continue;
+        const double m = std::min({l[0], l[1], l[2]});
+        if (m >= -kRelTol && m > best_min) {
+            best_min = m;
+            best = f;
+        }
+    }
+    return best;
+}
+
+std::vector<uint32_t> infer_parents(const VerifyInput& in, const Adjacency& out, const InputStars& stars,
+                                    Failures& fails) {
+    const size_t n = in.in_points.size();
+    const size_t F = in.out_faces.size();
+    std::vector<uint32_t> parent(F, kNo);
+    std::vector<uint32_t> queue;
+    std::vector<uint32_t> cand;
+    auto centroid = [&](uint32_t f) {
+        const Triangle& t = in.out_faces[f];
+        V3 c{0, 0, 0};
+        for (uint32_t v : t)
+            for (int k = 0; k < 3; ++k) c[static_cast<size_t>(k)] += in.out_points[v][static_cast<size_t>(k)] / 3.0;
+        return c;
+    };
+    auto add_star = [&](uint32_t v) {
+        for (uint32_t i = stars.offset[v]; i < stars.offset[v + 1]; ++i) cand.push_back(stars.faces[i]);
+    };
+    for (uint32_t f = 0; f < F; ++f) {
+        if (!out.face_ok[f]) continue;
+        cand.clear();
+        const Triangle& t = in.out_faces[f];
+        std::array<uint32_t, 3> orig{};
+        int no = 0;
+        for (uint32_t v : t)
+            if (v < n) orig[static_cast<size_t>(no++)] = v;
+        if (no == 0) continue;
+        if (no >= 2) {
+            // Faces containing both of two original vertices: intersect the stars.
+            for (uint32_t i = stars.offset[orig[0]]; i < stars.offset[orig[0] + 1]; ++i) {
+                const Triangle& it = in.in_faces[stars.faces[i]];
+                for (int j = 1; j < no; ++j) {
+                    const uint32_t w = orig[static_cast<size_t>(j)];
+                    if (it[0] == w || it[1] == w || it[2] == w) {
+                        cand.push_back(stars.faces[i]);
+                        break;
+                    }
+                }
+            }
+            if (no == 3)  // the pair (orig[1], orig[2]) too
+                for (uint32_t i = stars.offset[orig[1]]; i < stars.offset[orig[1] + 1]; ++i) {
+                    const Triangle& it = in.in_faces[stars.faces[i]];
+                    if (it[0] == orig[2] || it[1] == orig[2] || it[2] == orig[2]) cand.push_back(stars.faces[i]);
+                }
+        }
+        uint32_t p = best_container(in.in_points, in.in_faces, cand, centroid(f));
+        if (p == kNo) {
+            cand.clear();
+            for (int j = 0; j < no; ++j) add_star(orig[static_cast<size_t>(j)]);
+            p = best_container(in.in_points, in.in_faces, cand, centroid(f));
+        }
+        if (p != kNo) {
+            parent[f] = p;
+            queue.push_back(f);
+        }
+    }
+    // Breadth-first over edge-adjacent output faces for faces made only of inserted vertices.
+    for (size_t qi = 0; qi < queue.size(); ++qi) {
+        const uint32_t f = queue[qi];
+        for (uint32_t i = 0; i < 3; ++i) {
+            const uint32_t tw = out.twin[3 * f + i];
+            if (tw == kNo) continue;
+            const uint32_t g = tw / 3;
+            if (parent[g] != kNo || !out.face_ok[g]) continue;
+            const Triangle& P = in.in_faces[parent[f]];
+            cand.assign(1, parent[f]);
+            uint32_t p = best_container(in.in_points, in.in_faces, cand, centroid(g));
+            if (p == kNo) {
+                cand.clear();
+                for (uint32_t v : P) add_star(v);
+                p = best_container(in.in_points, in.in_faces, cand, centroid(g));
+            }
+            if (p != kNo) {
+                parent[g] = p;
+                queue.push_back(g);
+            }
+        }
+    }
+    for (uint32_t f = 0; f < F; ++f)
+        if (out.face_ok[f] && parent[f] == kNo)
+            fails.add("parent", "face " + std::to_string(f) + " " + tri_str(in.out_faces[f]) +
+                                    ": no input face contains its centroid (cannot infer its parent)");
+    return parent;
+}
+
+// --- GL strip decoding (own implementation) -------------------------------------------------
+
+std::vector<Triangle> gl_decode(const std::vector<uint32_t>& s) {
+    std::vector<Triangle> out;
+    for (size_t i = 0; i + 2 < s.size(); ++i) {
+        const uint32_t a = s[i], b = s[i + 1], c = s[i + 2];
+        if (a == b || b == c || a == c) continue;
+        out.push_back((i % 2 == 0) ? Triangle{a, b, c} : Triangle{b, a, c});
+    }
+    return out;
+}
+
+// --- cycles -----------------------------------------------------------------------------------
+
+using Bits = std::vector<uint64_t>;
+
+size_t z2_rank(std::vector<Bits>& rows, size_t ncols) {
+    size_t rank = 0;
+    for (size_t col = 0; col < ncols && rank < rows.size(); ++col) {
+        const size_t w = col / 64;
+        const uint64_t bit = uint64_t{1} << (col % 64);
+        size_t piv = rank;
+        while (piv < rows.size() && !(rows[piv][w] & bit)) ++piv;
+        if (piv == rows.size()) continue;
+        std::swap(rows[piv], rows[rank]);
+        for (size_t r = 0; r < rows.size(); ++r)
+            if (r != rank && (rows[r][w] & bit))
+                for (size_t k = 0; k < rows[r].size(); ++k) rows[r][k] ^= rows[rank][k];
+        ++rank;
+    }
+    return rank;
+}
+
+void check_cycles(const VerifyInput& in, const Adjacency& out, long long expected, Failures& fails,
+                  VerifyReport& report) {
+    const auto& cycles = *in.cycles;
+    const size_t m = cycles.size();
+    const size_t F = out.faces.size();
+    report.cycles_checked = m;
+    if (static_cast<long long>(m) != expected)
+        fails.add("cycles", "found " + std::to_string(m) + " cycles, expected 2g+h-1 = " + std::to_string(expected) +
+                                " (2g for a closed surface)");
+    // Edge ids (undirected) for interior edges.
+    std::vector<uint32_t> edge_id(3 * F, kNo);
+    uint32_t num_edges = 0;
+    for (uint32_t h = 0; h < 3 * F; ++h) {
+        if (!out.face_ok[h / 3]) continue;
+        const uint32_t t = out.twin[h];
+        if (t == kNo || h < t) edge_id[h] = num_edges++;
+        else edge_id[h] = edge_id[t];
+    }
+    // Crossings: (edge, cycle) pairs.
+    std::vector<std::pair<uint32_t, uint32_t>> cross;
+    bool closed_ok = true;
+    for (uint32_t c = 0; c < m; ++c) {
+        const auto& cyc = cycles[c];
+        if (cyc.size() < 2) {
+            fails.add("cycles", "cycle " + std::to_string(c) + " has " + std::to_string(cyc.size()) +
+                                    " faces; a closed chain needs at least 2");
+            closed_ok = false;
+            continue;
+        }
+        bool this_ok = true;
+        for (size_t i = 0; i < cyc.size() && this_ok; ++i) {
+            const uint32_t f = cyc[i], g = cyc[(i + 1) % cyc.size()];
+            if (f >= F || g >= F) {
+                fails.add("cycles", "cycle " + std::to_string(c) + " position " + std::to_string(f >= F ? i : (i + 1) % cyc.size()) +
+                                        ": face " + std::to_string(f >= F ? f : g) + " out of range (" +
+                                        std::to_string(F) + " faces)");
+                this_ok = false;
+                break;
+            }
+            uint32_t e = kNo;
+            for (uint32_t k = 0; k < 3; ++k) {
+                const uint32_t t = out.twin[3 * f + k];
+                if (t != kNo && t / 3 == g) e = edge_id[3 * f + k];
+            }
+            if (e == kNo) {
+                fails.add("cycles", "cycle " + std::to_string(c) + ": faces " + std::to_string(f) + " and " +
+                                        std::to_string(g) + " (positions " + std::to_string(i) + ", " +
+                                        std::to_string((i + 1) % cyc.size()) + ") do not share an edge" +
+                                        (i + 1 == cyc.size() ? " (the chain is not closed)" : ""));
+                this_ok = false;
+                break;
+            }
+            cross.emplace_back(e, c);
+        }
+        closed_ok = closed_ok && this_ok;
+    }
+    if (!closed_ok) {
+        report.notes.push_back("cycles: independence not checked (a cycle is not a closed chain)");
+        return;
+    }
+    if (m == 0) return;
+    if (static_cast<long long>(m) > expected) {
+        report.notes.push_back("cycles: independence not checked (more cycles than the dimension of H1)");
+        return;
+    }
+    const size_t W = (m + 63) / 64;
+    // Sparse crossing parity per edge: CSR over edges of cycles crossing an odd number of times.
+    std::sort(cross.begin(), cross.end());
+    std::unordered_map<uint32_t, Bits> edge_bits;
+    for (size_t i = 0; i < cross.size();) {
+        size_t j = i;
+        while (j < cross.size() && cross[j] == cross[i]) ++j;
+        if ((j - i) % 2 == 1) {
+            Bits& b = edge_bits[cross[i].first];
+            if (b.empty()) b.assign(W, 0);
+            b[cross[i].second / 64] ^= uint64_t{1} << (cross[i].second % 64);
+        }
+        i = j;
+    }
+    // Tree-cotree on the output, boundary vertices identified to one super-vertex S.
+    const uint32_t NV = static_cast<uint32_t>(out.num_points);
+    const uint32_t S = NV;
+    auto q = [&](uint32_t v) { return out.on_boundary[v] ? S : v; };
+    // Interior edges as adjacency lists (CSR) of the quotient graph.
+    std::vector<uint32_t> off(NV + 2, 0);
+    std::vector<uint32_t> interior;  // one representative half-edge per interior edge
+    for (uint32_t h = 0; h < 3 * F; ++h)
+        if (out.face_ok[h / 3] && out.twin[h] != kNo && h < out.twin[h]) interior.push_back(h);
+    for (uint32_t h : interior) {
+        const uint32_t a = q(out.from(h)), b = q(out.to(h));
+        if (a == b) continue;
+        ++off[a + 1];
+        ++off[b + 1];
+    }
+    for (uint32_t i = 0; i <= NV; ++i) off[i + 1] += off[i];
+    std::vector<uint32_t> adj(off[NV + 1]);
+    {
+        std::vector<uint32_t> fill(off.begin(), off.end() - 1);
+        for (uint32_t h : interior) {
+            const uint32_t a = q(out.from(h)), b = q(out.to(h));
+            if (a == b) continue;
+            adj[fill[a]++] = h;
+            adj[fill[b]++] = h;
+        }
+    }
+    std::vector<bool> in_tree(num_edges, false);
+    std::vector<uint32_t> tree_parent_edge(NV + 1, kNo), order;
+    std::vector<bool> seen(NV + 1, false);
+    uint32_t root = kNo;
+    if (report.boundary_loops > 0) root = S;
+    else
+        for (uint32_t f = 0; f < F && root == kNo; ++f)
+            if (out.face_ok[f]) root = out.faces[f][0];
+    if (root == kNo) return;
+    seen[root] = true;
+    order.push_back(root);
+    for (size_t i = 0; i < order.size(); ++i) {
+        const uint32_t x = order[i];
+        for (uint32_t k = off[x]; k < off[x + 1]; ++k) {
+            const uint32_t h = adj[k];
+            const uint32_t a = q(out.from(h)), b = q(out.to(h));
+            const uint32_t y = a == x ? b : a;
+            if (seen[y]) continue;
+            seen[y] = true;
+            tree_parent_edge[y] = h;
+            in_tree[edge_id[h]] = true;
+            order.push_back(y);
+        }
+    }
+    // Dual spanning tree over interior edges not in T.
+    std::vector<bool> in_cotree(num_edges, false), face_seen(F, false);
+    std::vector<uint32_t> fq;
+    for (uint32_t f = 0; f < F && fq.empty(); ++f)
+        if (out.face_ok[f]) {
+            fq.push_back(f);
+            face_seen[f] = true;
+        }
+    for (size_t i = 0; i < fq.size(); ++i) {
+        const uint32_t f = fq[i];
+        for (uint32_t k = 0; k < 3; ++k) {
+            const uint32_t h = 3 * f + k, t = out.twin[h];
+            if (t == kNo || in_tree[edge_id[h]] || face_seen[t / 3]) continue;
+            face_seen[t / 3] = true;
+            in_cotree[edge_id[h]] = true;
+            fq.push_back(t / 3);
+        }
+    }
+    std::vector<uint32_t> leftovers;
+    for (uint32_t h : interior)
+        if (!in_tree[edge_id[h]] && !in_cotree[edge_id[h]]) leftovers.push_back(h);
+    if (static_cast<long long>(leftovers.size()) != expected) {
+        fails.add("cycles", "tree-cotree on the output gives " + std::to_string(leftovers.size()) +
+                                " generators, expected " + std::to_string(expected) +
+                                " (output is not a connected surface of the input's topology)");
+        return;
+    }
+    // P(x): parity vector of tree path root->x.
+    std::vector<Bits> P(NV + 1);
+    P[root].assign(W, 0);
+    for (size_t i = 1; i < order.size(); ++i) {
+        const uint32_t y = order[i], h = tree_parent_edge[y];
+        const uint32_t a = q(out.from(h)), b = q(out.to(h));
+        const uint32_t x = a == y ? b : a;
+        P[y] = P[x];
+        if (auto it = edge_bits.find(edge_id[h]); it != edge_bits.end())
+            for (size_t k = 0; k < W; ++k) P[y][k] ^= it->second[k];
+    }
+    std::vector<Bits> rows;
+    rows.reserve(leftovers.size());
+    for (uint32_t h : leftovers) {
+        const uint32_t a = q(out.from(h)), b = q(out.to(h));
+        Bits r(W, 0);
+        if (!P[a].empty() && !P[b].empty())
+            for (size_t k = 0; k < W; ++k) r[k] = P[a][k] ^ P[b][k];
+        if (auto it = edge_bits.find(edge_id[h]); it != edge_bits.end())
+            for (size_t k = 0; k < W; ++k) r[k] ^= it->second[k];
+        rows.push_back(std::move(r));
+    }
+    // Null-homologous cycles: zero column.
+    Bits any(W, 0);
+    for (const Bits& r : rows)
+        for (size_t k = 0; k < W; ++k) any[k] |= r[k];
+    for (uint32_t c = 0; c < m; ++c)
+        if (!(any[c / 64] >> (c % 64) & 1))
+            fails.add("cycles", "cycle " + std::to_string(c) + " is null-homologous (bounds a region; e.g. a loop around one vertex)");
+    const size_t rank = z2_rank(rows, m);
+    report.cycle_rank = rank;
+    if (rank < m)
+        fails.add("cycles", "the " + std::to_string(m) + " cycles are not linearly independent in H1(M;Z2): rank " +
+                                std::to_string(rank));
+}
+
+}  // namespace
+
+std::string VerifyReport::to_string() const {
+    std::ostringstream os;
+    if (ok()) {
+        os << "OK: " << output_faces << " output faces (" << input_faces << " input), Euler characteristic "
+           << euler_characteristic << ", " << boundary_loops << " boundary loop(s), genus " << genus;
+        if (cycles_checked) os << ", " << cycles_checked << " independent cycles";
+        os << "\n";
+    } else {
+        os << "FAILED: " << failures.size() << " problem line(s)\n";
+        for (const auto& f : failures) os << "  " << f << "\n";
+    }
+    for (const auto& n : notes) os << "  note: " << n << "\n";
+    return os.str();
+}
+
+VerifyReport verify(const VerifyInput& in) {
+    VerifyReport report;
+    Failures fails(report);
+    const size_t n = in.in_points.size();
+    const size_t F = in.out_faces.size();
+    report.input_faces = in.in_faces.size();
+    report.output_faces = F;
+
+    // ---- input sanity (the reference everything is compared with)
+    const Adjacency inp = build_adjacency(n, in.in_faces, "input");
+    if (!inp.manifold || in.in_faces.empty()) {
+        for (const auto& p : inp.problems) fails.add("input", p);
+        if (in.in_faces.empty()) fails.add("input", "no faces");
+        report.notes.push_back("input is not a valid manifold mesh; output not checked");
+        fails.finish();
+        return report;
+    }
+
+    // ---- original vertices unchanged
+    if (in.out_points.size() < n) {
+        fails.add("vertices", "output has " + std::to_string(in.out_points.size()) + " vertices, fewer than the input's " +
+                                  std::to_string(n));
+    }
+    for (size_t v = 0; v < std::min(n, in.out_points.size()); ++v)
+        if (!(in.out_points[v] == in.in_points[v]))
+            fails.add("vertices", "vertex " + std::to_string(v) + " moved (input vertices must be unchanged)");
+    for (size_t v = 0; v < in.out_points.size(); ++v)
+        for (double c : in.out_points[v])
+            if (!std::isfinite(c)) {
+                fails.add("vertices", "vertex " + std::to_string(v) + " has a non-finite coordinate");
+                break;
+            }
+    if (F == 0) {
+        fails.add("faces", "output has no faces");
+        fails.finish();
+        return report;
+    }
+
+    // ---- output topology
+    const Adjacency out = build_adjacency(in.out_points.size(), in.out_faces, "output");
+    for (const auto& p : out.problems) fails.add("manifold", p);
+    report.output_vertices = static_cast<size_t>(out.referenced_vertices);
+    report.euler_characteristic = out.euler;
+    report.boundary_loops = out.boundary_loops;
+    {
+        const long long h = static_cast<long long>(out.boundary_loops);
+        report.genus = (2 - out.euler - h) / 2;
+    }
+    bool all_faces_ok = std::all_of(out.face_ok.begin(), out.face_ok.end(), [](bool b) { return b; });
+    if (out.euler != inp.euler)
+        fails.add("topology", "Euler characteristic " + std::to_string(out.euler) + " differs from the input's " +
+                                  std::to_string(inp.euler));
+    if (out.boundary_loops != inp.boundary_loops)
+        fails.add("topology", std::to_string(out.boundary_loops) + " boundary loop(s), the input has " +
+                                  std::to_string(inp.boundary_loops));
+
+    // ---- parents
+    std::vector<uint32_t> parent;
+    if (!in.out_parent.empty()) {
+        parent = in.out_parent;
+        if (parent.size() != F) {
+            fails.add("parent", "parent array has " + std::to_string(parent.size()) + " entries for " +
+                                    std::to_string(F) + " faces");
+            parent.resize(F, kNo);
+        }
+        for (size_t f = 0; f < F; ++f)
+            if (parent[f] != kNo && parent[f] >= in.in_faces.size()) {
+                fails.add("parent", "face " + std::to_string(f) + ": parent " + std::to_string(parent[f]) +
+                                        " out of range (" + std::to_string(in.in_faces.size()) + " input faces)");
+                parent[f] = kNo;
+            }
+    } else {
+        const InputStars stars = build_stars(n, in.in_faces);
+        parent = infer_parents(in, out, stars, fails);
+    }
+
+    // ---- geometry per face, areas per parent
+    std::vector<double> child_area(in.in_faces.size(), 0.0);
+    std::vector<uint32_t> child_count(in.in_faces.size(), 0);
+    for (uint32_t f = 0; f < F; ++f) {
+        if (!out.face_ok[f] || parent[f] == kNo) continue;
+        ++report.faces_checked;
+        const Triangle& t = in.out_faces[f];
+        const ParentFrame P = frame_of(in.in_points, in.in_faces[parent[f]]);
+        const std::string who = "face " + std::to_string(f) + " (parent " + std::to_string(parent[f]) + ")";
+        ++child_count[parent[f]];
+        const V3 a = in.out_points[t[0]], b = in.out_points[t[1]], c = in.out_points[t[2]];
+        bool in_plane = true, inside = true;
+        for (const V3& p : {a, b, c}) {
+            double dist = 0;
+            const auto l = bary(P, p, dist);
+            if (!(dist <= kRelTol * P.size)) in_plane = false;
+            if (!(std::min({l[0], l[1], l[2]}) >= -kRelTol)) inside = false;
+        }
+        if (!in_plane) fails.add("geometry", who + ": not in its parent's plane");
+        else if (!inside) fails.add("geometry", who + ": not inside its parent");
+        const V3 nf = crs(sub(b, a), sub(c, a));
+        const double nP = std::sqrt(P.n2);
+        const double projected = nP > 0 ? dot(nf, P.n) / nP : 0.0;  // twice the signed area in the parent's plane
+        if (!(norm(nf) > 1e-15 * nP)) fails.add("geometry", who + ": degenerate (zero area)");
+        else if (!(projected > 0)) fails.add("orientation", who + ": orientation opposite to its parent's (flipped)");
+        child_area[parent[f]] += 0.5 * projected;
+    }
+    if (all_faces_ok && std::all_of(parent.begin(), parent.end(), [](uint32_t p) { return p != kNo; })) {
+        for (uint32_t p = 0; p < in.in_faces.size(); ++p) {
+            const ParentFrame P = frame_of(in.in_points, in.in_faces[p]);
+            const double area = 0.5 * std::sqrt(P.n2);
+            if (child_count[p] == 0) {
+                fails.add("coverage", "input face " + std::to_string(p) + " has no child in the output");
+                continue;
+            }
+            if (!(std::abs(child_area[p] - area) <= kRelTol * area))
+                fails.add("coverage", "input face " + std::to_string(p) + ": children's areas sum to " +
+                                          std::to_string(child_area[p]) + ", parent's area is " + std::to_string(area));
+        }
+    } else {
+        report.notes.push_back("area sums not checked (some faces invalid or without parent)");
+    }
+
+    // ---- T-junctions: output boundary edges must tile the input boundary edges exactly
+    if (out.manifold && std::all_of(parent.begin(), parent.end(), [](uint32_t p) { return p != kNo; })) {
+        struct Piece {
+            uint32_t input_he;
+            double t;
+            uint32_t a, b, face;
+        };
+        std::vector<Piece> pieces;
+        for (uint32_t h = 0; h < 3 * F; ++h) {
+            if (out.twin[h] != kNo) continue;
+            const uint32_t f = h / 3, a = out.from(h), b = out.to(h);
+            const uint32_t P = parent[f];
+            uint32_t found = kNo;
+            double ta = 0, tb = 0;
+            for (uint32_t k = 0; k < 3 && found == kNo; ++k) {
+                const uint32_t ih = 3 * P + k;
+                if (inp.twin[ih] != kNo) continue;
+                const V3 u = in.in_points[inp.from(ih)], v = in.in_points[inp.to(ih)];
+                if (on_segment(u, v, in.out_points[a], &ta) && on_segment(u, v, in.out_points[b], &tb) && ta < tb)
+                    found = ih;
+            }
+            if (found == kNo) {
+                fails.add("conformity", "edge (" + std::to_string(a) + "," + std::to_string(b) + ") of face " +
+                                            std::to_string(f) + " has only one face but is not on the input's boundary (T-junction or hole)");
+                continue;
+            }
+            pieces.push_back({found, ta, a, b, f});
+        }
+        std::sort(pieces.begin(), pieces.end(), [](const Piece& x, const Piece& y) {
+            return x.input_he != y.input_he ? x.input_he < y.input_he : x.t < y.t;
+        });
+        std::vector<bool> covered(3 * in.in_faces.size(), false);
+        for (size_t i = 0; i < pieces.size();) {
+            size_t j = i;
+            const uint32_t ih = pieces[i].input_he;
+            while (j < pieces.size() && pieces[j].input_he == ih) ++j;
+            covered[ih] = true;
+            bool ok = pieces[i].a == inp.from(ih) && pieces[j - 1].b == inp.to(ih);
+            for (size_t k = i; k + 1 < j; ++k) ok = ok && pieces[k].b == pieces[k + 1].a;
+            if (!ok)
+                fails.add("conformity", "input boundary edge (" + std::to_string(inp.from(ih)) + "," +
+                                            std::to_string(inp.to(ih)) + ") is not tiled exactly by output boundary edges (T-junction, gap or overlap; near face " +
+                                            std::to_string(pieces[i].face) + ")");
+            i = j;
+        }
+        for (uint32_t ih = 0; ih < 3 * in.in_faces.size(); ++ih)
+            if (inp.twin[ih] == kNo && !covered[ih])
+                fails.add("conformity", "input boundary edge (" + std::to_string(inp.from(ih)) + "," +
+                                            std::to_string(inp.to(ih)) + ") is not covered by output boundary edges");
+    } else {
+        report.notes.push_back("T-junction check skipped (output is not a manifold or parents are missing)");
+    }
+
+    // ---- strip: consecutive faces share an edge
+    for (uint32_t f = 0; f + 1 < F; ++f) {
+        if (!out.face_ok[f] || !out.face_ok[f + 1]) continue;
+        std::array<uint32_t, 3> common{};
+        const uint32_t k = common_vertices(in.out_faces[f], in.out_faces[f + 1], common);
+        if (k != 2)
+            fails.add("strip", "faces " + std::to_string(f) + " and " + std::to_string(f + 1) + " share " +
+                                   std::to_string(k) + " vertices, not an edge");
+    }
+
+    // ---- index sequence
+    if (in.indices) {
+        const auto& s = *in.indices;
+        bool range_ok = true;
+        for (size_t i = 0; i < s.size(); ++i)
+            if (s[i] >= in.out_points.size()) {
+                fails.add("indices", "index " + std::to_string(i) + " = " + std::to_string(s[i]) + " out of range (" +
+                                         std::to_string(in.out_points.size()) + " vertices)");
+                range_ok = false;
+            }
+        if (range_ok) {
+            const auto dec = gl_decode(s);
+            if (dec.size() != F)
+                fails.add("indices", "index sequence decodes to " + std::to_string(dec.size()) + " triangles, the output has " +
+                                         std::to_string(F));
+            for (size_t f = 0; f < std::min(dec.size(), F); ++f)
+                if (!same_cyclic(dec[f], in.out_faces[f])) {
+                    const bool flipped = same_cyclic({dec[f][1], dec[f][0], dec[f][2]}, in.out_faces[f]);
+                    fails.add("indices", "decoded triangle " + std::to_string(f) + " " + tri_str(dec[f]) +
+                                             (flipped ? " has the opposite winding of face " : " differs from face ") +
+                                             std::to_string(f) + " " + tri_str(in.out_faces[f]));
+                }
+        }
+    }
+
+    // ---- constraints
+    if (!in.constraints.empty()) {
+        std::unordered_set<uint64_t> cset;
+        for (size_t i = 0; i < in.constraints.size(); ++i) {
+            const auto [a, b] = in.constraints[i];
+            const std::string who = "constraint " + std::to_string(i) + " (" + std::to_string(a) + "," + std::to_string(b) + ")";
+            if (a >= n || b >= n || a == b) {
+                fails.add("constraints", who + ": not a pair of distinct input vertices");
+                continue;
+            }
+            if (!inp.directed.count(key(a, b)) && !inp.directed.count(key(b, a))) {
+                fails.add("constraints", who + ": not an edge of the input");
+                continue;
+            }
+            cset.insert(ukey(a, b));
+            if (!out.directed.count(key(a, b)) && !out.directed.count(key(b, a)))
+                fails.add("constraints", who + ": constraint edge was split (it is not an edge of the output)");
+        }
+        auto constraint_edges_of = [&](uint32_t P, std::vector<std::pair<uint32_t, uint32_t>>& es) {
+            const Triangle& t = in.in_faces[P];
+            for (uint32_t k = 0; k < 3; ++k) {
+                const uint32_t u = t[k], v = t[(k + 1) % 3];
+                if (cset.count(ukey(u, v))) es.emplace_back(u, v);
+            }
+        };
+        std::vector<std::pair<uint32_t, uint32_t>> es;
+        // No output vertex strictly inside a constraint edge.
+        for (uint32_t f = 0; f < F; ++f) {
+            if (!out.face_ok[f] || parent[f] == kNo) continue;
+            es.clear();
+            constraint_edges_of(parent[f], es);
+            for (const auto& [u, v] : es)
+                for (uint32_t p : in.out_faces[f]) {
+                    if (p == u || p == v) continue;
+                    double t = 0;
+                    if (on_segment(in.in_points[u], in.in_points[v], in.out_points[p], &t) && t > kRelTol && t < 1 - kRelTol)
+                        fails.add("constraints", "vertex " + std::to_string(p) + " (face " + std::to_string(f) +
+                                                     ") lies inside constraint edge (" + std::to_string(u) + "," +
+                                                     std::to_string(v) + "): the constraint was split");
+                }
+        }
+        // Consecutive faces never share (a piece of) a constraint edge.
+        for (uint32_t f = 0; f + 1 < F; ++f) {
+            if (!out.face_ok[f] || !out.face_ok[f + 1] || parent[f] == kNo || parent[f + 1] == kNo) continue;
+            std::array<uint32_t, 3> common{};
+            if (common_vertices(in.out_faces[f], in.out_faces[f + 1], common) != 2) continue;
+            es.clear();
+            constraint_edges_of(parent[f], es);
+            if (parent[f + 1] != parent[f]) constraint_edges_of(parent[f + 1], es);
+            for (const auto& [u, v] : es) {
+                const V3 U = in.in_points[u], Vv = in.in_points[v];
+                if (on_segment(U, Vv, in.out_points[common[0]]) && on_segment(U, Vv, in.out_points[common[1]])) {
+                    fails.add("constraints", "faces " + std::to_string(f) + " and " + std::to_string(f + 1) + " share edge (" +
+                                                 std::to_string(common[0]) + "," + std::to_string(common[1]) +
+                                                 ") on constraint edge (" + std::to_string(u) + "," + std::to_string(v) +
+                                                 "): the strip crosses a constraint");
+                    break;
+                }
+            }
+        }
+    }
+
+    // ---- source / target
+    auto has_vertex = [&](uint32_t f, uint32_t v) {
+        const Triangle& t = in.out_faces[f];
+        return t[0] == v || t[1] == v || t[2] == v;
+    };
+    if (in.source) {
+        if (*in.source >= n) fails.add("source", "source vertex " + std::to_string(*in.source) + " is not an input vertex");
+        else if (!has_vertex(0, *in.source))
+            fails.add("source", "first face 0 " + tri_str(in.out_faces[0]) + " does not contain source vertex " +
+                                    std::to_string(*in.source));
+    }
+    if (in.target) {
+        if (*in.target >= n) fails.add("target", "target vertex " + std::to_string(*in.target) + " is not an input vertex");
+        else if (!has_vertex(static_cast<uint32_t>(F - 1), *in.target))
+            fails.add("target", "last face " + std::to_string(F - 1) + " " + tri_str(in.out_faces[F - 1]) +
+                                    " does not contain target vertex " + std::to_string(*in.target));
+    }
+
+    // ---- cycles
+    if (in.cycles) {
+        const long long h = static_cast<long long>(inp.boundary_loops);
+        const long long expected = h > 0 ? 1 - inp.euler : 2 - inp.euler;
+        if (!out.manifold || !all_faces_ok) {
+            report.cycles_checked = in.cycles->size();
+            if (static_cast<long long>(in.cycles->size()) != expected)
+                fails.add("cycles", "found " + std::to_string(in.cycles->size()) + " cycles, expected " + std::to_string(expected));
+            report.notes.push_back("cycles: independence not checked (output is not a manifold)");
+        } else {
+            check_cycles(in, out, expected, fails, report);
+        }
+    }
+
+    fails.finish();
+    return report;
+}
+
+VerifyReport verify_files(const std::string& in_path, const std::string& out_path, const VerifyFileOptions& options) {
+    VerifyInput vi;
+    {
+        TriangleSoup soup = read_mesh_file(in_path);
+        vi.in_points = std::move(soup.points);
+        vi.in_faces = std::move(soup.triangles);
+    }
+    {
+        OutputMesh om = read_output_mesh(out_path);
+        vi.out_points = std::move(om.points);
+        vi.out_faces = std::move(om.faces);
+        vi.out_parent = std::move(om.parent);
+    }
+    if (options.indices_path) vi.indices = read_index_file(*options.indices_path);
+    if (options.constraints_path)
+        vi.constraints = read_constraints(*options.constraints_path, static_cast<uint32_t>(vi.in_points.size()));
+    vi.source = options.source;
+    vi.target = options.target;
+    if (options.cycles_path) vi.cycles = read_cycles_file(*options.cycles_path);
+    return verify(vi);
+}
+
+}  // namespace singlestrip

@@ -1,0 +1,484 @@
+// singlestrip — the verifier's own readers for OUTPUT files (.ply/.obj/.off), index files and
+// cycle files. Deliberately independent of src/io/*: a bug in the writer or the input readers
+// must not be able to hide itself by being read back with the same code.
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "singlestrip/errors.hpp"
+#include "singlestrip/verify.hpp"
+
+namespace singlestrip {
+namespace {
+
+[[noreturn]] void fail(const std::string& path, const std::string& what) {
+    throw InputError(path + ": " + what);
+}
+
+std::string slurp(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) fail(path, "cannot open file");
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    if (in.bad()) fail(path, "read error");
+    return std::move(ss).str();
+}
+
+std::string lower_extension(const std::string& path) {
+    const auto slash = path.find_last_of("/\\");
+    const auto dot = path.find_last_of('.');
+    if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return {};
+    std::string ext = path.substr(dot + 1);
+    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return ext;
+}
+
+bool parse_double(std::string_view tok, double& out) {
+    if (!tok.empty() && tok.front() == '+') tok.remove_prefix(1);
+    const char* end = tok.data() + tok.size();
+    auto res = std::from_chars(tok.data(), end, out);
+    return res.ec == std::errc() && res.ptr == end;
+}
+
+bool parse_long(std::string_view tok, long long& out) {
+    if (!tok.empty() && tok.front() == '+') tok.remove_prefix(1);
+    const char* end = tok.data() + tok.size();
+    auto res = std::from_chars(tok.data(), end, out);
+    return res.ec == std::errc() && res.ptr == end;
+}
+
+std::vector<std::string_view> split_ws(std::string_view line) {
+    std::vector<std::string_view> out;
+    size_t i = 0;
+    while (i < line.size()) {
+        while (i < line.size() && std::isspace(static_cast<unsigned char>(line[i]))) ++i;
+        size_t j = i;
+        while (j < line.size() && !std::isspace(static_cast<unsigned char>(line[j]))) ++j;
+        if (j > i) out.push_back(line.substr(i, j - i));
+        i = j;
+    }
+    return out;
+}
+
+/// Splits text into lines (handles \n and \r\n), keeping line numbers implicit by position.
+std::vector<std::string_view> split_lines(std::string_view text) {
+    std::vector<std::string_view> lines;
+    size_t start = 0;
+    while (start <= text.size()) {
+        size_t nl = text.find('\n', start);
+        if (nl == std::string_view::npos) nl = text.size();
+        std::string_view line = text.substr(start, nl - start);
+        if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+        lines.push_back(line);
+        start = nl + 1;
+    }
+    return lines;
+}
+
+void check_point(const std::string& path, size_t v, const Point3& p) {
+    for (double c : p)
+        if (!std::isfinite(c)) fail(path, "vertex " + std::to_string(v) + " has a non-finite coordinate");
+}
+
+void check_indices(const std::string& path, const OutputMesh& m) {
+    for (size_t f = 0; f < m.faces.size(); ++f)
+        for (uint32_t v : m.faces[f])
+            if (v >= m.points.size())
+                fail(path, "face " + std::to_string(f) + " references vertex " + std::to_string(v) +
+                               " but the file has only " + std::to_string(m.points.size()) + " vertices");
+}
+
+// ---------------------------------------------------------------------------------------------
+// PLY
+
+enum class PlyType { I8, U8, I16, U16, I32, U32, F32, F64 };
+
+bool ply_type(std::string_view s, PlyType& t) {
+    if (s == "char" || s == "int8") t = PlyType::I8;
+    else if (s == "uchar" || s == "uint8") t = PlyType::U8;
+    else if (s == "short" || s == "int16") t = PlyType::I16;
+    else if (s == "ushort" || s == "uint16") t = PlyType::U16;
+    else if (s == "int" || s == "int32") t = PlyType::I32;
+    else if (s == "uint" || s == "uint32") t = PlyType::U32;
+    else if (s == "float" || s == "float32") t = PlyType::F32;
+    else if (s == "double" || s == "float64") t = PlyType::F64;
+    else return false;
+    return true;
+}
+
+size_t ply_size(PlyType t) {
+    switch (t) {
+        case PlyType::I8: case PlyType::U8: return 1;
+        case PlyType::I16: case PlyType::U16: return 2;
+        case PlyType::I32: case PlyType::U32: case PlyType::F32: return 4;
+        case PlyType::F64: return 8;
+    }
+    return 1;
+}
+
+struct PlyProperty {
+    std::string name;
+    PlyType type = PlyType::F64;
+    bool is_list = false;
+    PlyType count_type = PlyType::U8;
+};
+
+struct PlyElement {
+    std::string name;
+    size_t count = 0;
+    std::vector<PlyProperty> props;
+};
+
+/// Sequential value source over either ASCII tokens or binary bytes.
+class PlySource {
+public:
+    PlySource(const std::string& path, std::string_view data, int format)
+        : path_(path), data_(data), format_(format) {}
+
+    double next(PlyType t, const std::string& where) {
+        if (format_ == 0) return next_ascii(where);
+        const size_t n = ply_size(t);
+        if (pos_ + n > data_.size()) fail(path_, "truncated binary data (" + where + ")");
+        unsigned char b[8];
+        std::memcpy(b, data_.data() + pos_, n);
+        pos_ += n;
+        const bool file_le = format_ == 1;
+        if (file_le != (std::endian::native == std::endian::little)) std::reverse(b, b + n);
+        switch (t) {
+            case PlyType::I8: { int8_t x; std::memcpy(&x, b, 1); return x; }
+            case PlyType::U8: { uint8_t x; std::memcpy(&x, b, 1); return x; }
+            case PlyType::I16: { int16_t x; std::memcpy(&x, b, 2); return x; }
+            case PlyType::U16: { uint16_t x; std::memcpy(&x, b, 2); return x; }
+            case PlyType::I32: { int32_t x; std::memcpy(&x, b, 4); return x; }
+            case PlyType::U32: { uint32_t x; std::memcpy(&x, b, 4); return x; }
+            case PlyType::F32: { float x; std::memcpy(&x, b, 4); return x; }
+            case PlyType::F64: { double x; std::memcpy(&x, b, 8); return x; }
+        }
+        return 0;
+    }
+
+private:
+    double next_ascii(const std::string& where) {
+        while (pos_ < data_.size() && std::isspace(static_cast<unsigned char>(data_[pos_]))) ++pos_;
+        if (pos_ >= data_.size()) fail(path_, "truncated ASCII data (" + where + ")");
+        size_t end = pos_;
+        while (end < data_.size() && !std::isspace(static_cast<unsigned char>(data_[end]))) ++end;
+        const std::string_view tok = data_.substr(pos_, end - pos_);
+        pos_ = end;
+        double v = 0;
+        if (!parse_double(tok, v)) fail(path_, "bad number '" + std::string(tok) + "' (" + where + ")");
+        return v;
+    }
+
+    const std::string& path_;
+    std::string_view data_;
+    int format_;  // 0 ascii, 1 binary little endian, 2 binary big endian
+    size_t pos_ = 0;
+};
+
+uint32_t as_index(const std::string& path, double v, const std::string& where) {
+    if (!(v >= 0) || v > 4294967295.0 || v != std::floor(v))
+        fail(path, "bad index value (" + where + ")");
+    return static_cast<uint32_t>(v);
+}
+
+OutputMesh read_ply(const std::string& path) {
+    const std::string text = slurp(path);
+    if (text.empty()) fail(path, "empty file");
+    const size_t end_header = text.find("end_header");
+    if (text.rfind("ply", 0) != 0 || end_header == std::string::npos) fail(path, "not a PLY file (bad header)");
+    size_t data_start = text.find('\n', end_header);
+    data_start = data_start == std::string::npos ? text.size() : data_start + 1;
+
+    int format = -1;
+    std::vector<PlyElement> elements;
+    const auto header_lines = split_lines(std::string_view(text).substr(0, end_header));
+    for (size_t li = 1; li < header_lines.size(); ++li) {
+        const auto tok = split_ws(header_lines[li]);
+        if (tok.empty() || tok[0] == "comment" || tok[0] == "obj_info") continue;
+        const std::string where = "header line " + std::to_string(li + 1);
+        if (tok[0] == "format") {
+            if (tok.size() < 2) fail(path, "bad format line");
+            if (tok[1] == "ascii") format = 0;
+            else if (tok[1] == "binary_little_endian") format = 1;
+            else if (tok[1] == "binary_big_endian") format = 2;
+            else fail(path, "unknown PLY format '" + std::string(tok[1]) + "'");
+        } else if (tok[0] == "element") {
+            long long count = 0;
+            if (tok.size() != 3 || !parse_long(tok[2], count) || count < 0) fail(path, "bad element line (" + where + ")");
+            elements.push_back({std::string(tok[1]), static_cast<size_t>(count), {}});
+        } else if (tok[0] == "property") {
+            if (elements.empty()) fail(path, "property before any element (" + where + ")");
+            PlyProperty p;
+            if (tok.size() == 5 && tok[1] == "list") {
+                p.is_list = true;
+                if (!ply_type(tok[2], p.count_type) || !ply_type(tok[3], p.type)) fail(path, "bad property type (" + where + ")");
+                p.name = std::string(tok[4]);
+            } else if (tok.size() == 3) {
+                if (!ply_type(tok[1], p.type)) fail(path, "bad property type (" + where + ")");
+                p.name = std::string(tok[2]);
+            } else {
+                fail(path, "bad property line (" + where + ")");
+            }
+            elements.back().props.push_back(p);
+        } else {
+            fail(path, "unexpected header keyword '" + std::string(tok[0]) + "' (" + where + ")");
+        }
+    }
+    if (format < 0) fail(path, "missing format line");
+
+    // Guard against absurd counts before reserving (truncated or hostile headers).
+    const size_t data_size = text.size() - data_start;
+    OutputMesh m;
+    PlySource src(path, std::string_view(text).substr(data_start), format);
+    bool have_vertex = false, have_face = false;
+    for (const PlyElement& el : elements) {
+        if (el.name == "vertex") {
+            have_vertex = true;
+            int ix = -1, iy = -1, iz = -1;
+            for (size_t i = 0; i < el.props.size(); ++i) {
+                if (el.props[i].is_list) continue;
+                if (el.props[i].name == "x") ix = static_cast<int>(i);
+                if (el.props[i].name == "y") iy = static_cast<int>(i);
+                if (el.props[i].name == "z") iz = static_cast<int>(i);
+            }
+            if (ix < 0 || iy < 0 || iz < 0) fail(path, "vertex element lacks x, y or z");
+            if (el.count > data_size + 1) fail(path, "vertex count exceeds the file size (truncated?)");
+            m.points.resize(el.count);
+            for (size_t v = 0; v < el.count; ++v) {
+                const std::string where = "vertex " + std::to_string(v);
+                for (size_t i = 0; i < el.props.size(); ++i) {
+                    const PlyProperty& p = el.props[i];
+                    if (p.is_list) {
+                        const double k = src.next(p.count_type, where);
+                        const uint32_t kk = as_index(path, k, where);
+                        for (uint32_t j = 0; j < kk; ++j) src.next(p.type, where);
+                        continue;
+                    }
+                    const double val = src.next(p.type, where);
+                    if (static_cast<int>(i) == ix) m.points[v][0] = val;
+                    if (static_cast<int>(i) == iy) m.points[v][1] = val;
+                    if (static_cast<int>(i) == iz) m.points[v][2] = val;
+                }
+                check_point(path, v, m.points[v]);
+            }
+        } else if (el.name == "face") {
+            have_face = true;
+            int ilist = -1, iparent = -1;
+            for (size_t i = 0; i < el.props.size(); ++i) {
+                const PlyProperty& p = el.props[i];
+                if (p.is_list && (p.name == "vertex_indices" || p.name == "vertex_index")) ilist = static_cast<int>(i);
+                if (!p.is_list && p.name == "parent") iparent = static_cast<int>(i);
+            }
+            if (ilist < 0) fail(path, "face element lacks a vertex_indices list");
+            if (el.count > data_size + 1) fail(path, "face count exceeds the file size (truncated?)");
+            m.faces.resize(el.count);
+            if (iparent >= 0) m.parent.resize(el.count);
+            for (size_t f = 0; f < el.count; ++f) {
+                const std::string where = "face " + std::to_string(f);
+                for (size_t i = 0; i < el.props.size(); ++i) {
+                    const PlyProperty& p = el.props[i];
+                    if (p.is_list) {
+                        const uint32_t k = as_index(path, src.next(p.count_type, where), where);
+                        if (static_cast<int>(i) == ilist && k != 3)
+                            fail(path, where + " has " + std::to_string(k) + " vertices, expected a triangle");
+                        for (uint32_t j = 0; j < k; ++j) {
+                            const double val = src.next(p.type, where);
+                            if (static_cast<int>(i) == ilist) m.faces[f][j] = as_index(path, val, where);
+                        }
+                        continue;
+                    }
+                    const double val = src.next(p.type, where);
+                    if (static_cast<int>(i) == iparent) m.parent[f] = as_index(path, val, where + " parent");
+                }
+            }
+        } else {
+            // Unknown element: read and discard its values.
+            for (size_t r = 0; r < el.count; ++r) {
+                const std::string where = el.name + " " + std::to_string(r);
+                for (const PlyProperty& p : el.props) {
+                    if (p.is_list) {
+                        const uint32_t k = as_index(path, src.next(p.count_type, where), where);
+                        for (uint32_t j = 0; j < k; ++j) src.next(p.type, where);
+                    } else {
+                        src.next(p.type, where);
+                    }
+                }
+            }
+        }
+    }
+    if (!have_vertex || !have_face) fail(path, "PLY lacks a vertex or face element");
+    check_indices(path, m);
+    return m;
+}
+
+// ---------------------------------------------------------------------------------------------
+// OBJ
+
+OutputMesh read_obj(const std::string& path) {
+    const std::string text = slurp(path);
+    OutputMesh m;
+    std::vector<std::array<long long, 3>> raw;  // 1-based or negative, resolved below
+    std::vector<size_t> nverts_at;               // vertex count when the face was read
+    const auto lines = split_lines(text);
+    for (size_t li = 0; li < lines.size(); ++li) {
+        std::string_view line = lines[li];
+        if (const auto hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
+        const auto tok = split_ws(line);
+        if (tok.empty()) continue;
+        const std::string where = "line " + std::to_string(li + 1);
+        if (tok[0] == "v") {
+            if (tok.size() < 4) fail(path, where + ": vertex needs 3 coordinates");
+            Point3 p{};
+            for (int k = 0; k < 3; ++k)
+                if (!parse_double(tok[static_cast<size_t>(k) + 1], p[static_cast<size_t>(k)]))
+                    fail(path, where + ": bad coordinate '" + std::string(tok[static_cast<size_t>(k) + 1]) + "'");
+            check_point(path, m.points.size(), p);
+            m.points.push_back(p);
+        } else if (tok[0] == "f") {
+            if (tok.size() != 4)
+                fail(path, where + ": face " + std::to_string(raw.size()) + " has " + std::to_string(tok.size() - 1) +
+                               " vertices, expected a triangle");
+            std::array<long long, 3> f{};
+            for (size_t k = 0; k < 3; ++k) {
+                std::string_view t = tok[k + 1];
+                t = t.substr(0, t.find('/'));
+                if (!parse_long(t, f[k]) || f[k] == 0) fail(path, where + ": bad vertex index '" + std::string(tok[k + 1]) + "'");
+            }
+            raw.push_back(f);
+            nverts_at.push_back(m.points.size());
+        }
+        // vt, vn, g, o, s, usemtl, mtllib, l: irrelevant to the check.
+    }
+    m.faces.resize(raw.size());
+    for (size_t f = 0; f < raw.size(); ++f) {
+        for (size_t k = 0; k < 3; ++k) {
+            long long idx = raw[f][k];
+            idx = idx > 0 ? idx - 1 : static_cast<long long>(nverts_at[f]) + idx;
+            if (idx < 0 || idx >= static_cast<long long>(m.points.size()))
+                fail(path, "face " + std::to_string(f) + " references vertex " + std::to_string(raw[f][k]) +
+                               " but the file has only " + std::to_string(m.points.size()) + " vertices");
+            m.faces[f][k] = static_cast<uint32_t>(idx);
+        }
+    }
+    if (m.faces.empty()) fail(path, "no faces");
+    return m;
+}
+
+// ---------------------------------------------------------------------------------------------
+// OFF
+
+OutputMesh read_off(const std::string& path) {
+    const std::string text = slurp(path);
+    // Non-comment, non-blank lines.
+    std::vector<std::vector<std::string_view>> rows;
+    for (std::string_view line : split_lines(text)) {
+        if (const auto hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
+        auto tok = split_ws(line);
+        if (!tok.empty()) rows.push_back(std::move(tok));
+    }
+    if (rows.empty()) fail(path, "empty file");
+    size_t r = 0;
+    auto& head = rows[0];
+    const std::string_view magic = head[0];
+    if (magic != "OFF" && magic != "COFF" && magic != "NOFF" && magic != "CNOFF")
+        fail(path, "not an OFF file (header '" + std::string(magic) + "')");
+    std::vector<std::string_view> counts(head.begin() + 1, head.end());
+    ++r;
+    if (counts.empty()) {
+        if (r >= rows.size()) fail(path, "missing counts line");
+        counts = rows[r++];
+    }
+    long long nv = 0, nf = 0;
+    if (counts.size() < 2 || !parse_long(counts[0], nv) || !parse_long(counts[1], nf) || nv < 0 || nf < 0)
+        fail(path, "bad counts line");
+    if (static_cast<size_t>(nv + nf) > rows.size()) fail(path, "truncated file (fewer lines than the counts say)");
+    OutputMesh m;
+    m.points.resize(static_cast<size_t>(nv));
+    for (size_t v = 0; v < m.points.size(); ++v, ++r) {
+        if (r >= rows.size()) fail(path, "truncated at vertex " + std::to_string(v));
+        if (rows[r].size() < 3) fail(path, "vertex " + std::to_string(v) + " needs 3 coordinates");
+        for (size_t k = 0; k < 3; ++k)
+            if (!parse_double(rows[r][k], m.points[v][k]))
+                fail(path, "vertex " + std::to_string(v) + ": bad coordinate '" + std::string(rows[r][k]) + "'");
+        check_point(path, v, m.points[v]);
+    }
+    m.faces.resize(static_cast<size_t>(nf));
+    for (size_t f = 0; f < m.faces.size(); ++f, ++r) {
+        if (r >= rows.size()) fail(path, "truncated at face " + std::to_string(f));
+        long long k = 0;
+        if (!parse_long(rows[r][0], k)) fail(path, "face " + std::to_string(f) + ": bad vertex count");
+        if (k != 3) fail(path, "face " + std::to_string(f) + " has " + std::to_string(k) + " vertices, expected a triangle");
+        if (rows[r].size() < 4) fail(path, "face " + std::to_string(f) + ": truncated");
+        for (size_t j = 0; j < 3; ++j) {
+            long long idx = 0;
+            if (!parse_long(rows[r][j + 1], idx) || idx < 0 || idx > 0xffffffffLL)
+                fail(path, "face " + std::to_string(f) + ": bad vertex index '" + std::string(rows[r][j + 1]) + "'");
+            m.faces[f][j] = static_cast<uint32_t>(idx);
+        }
+    }
+    check_indices(path, m);
+    return m;
+}
+
+}  // namespace
+
+OutputMesh read_output_mesh(const std::string& path) {
+    const std::string ext = lower_extension(path);
+    if (ext == "ply") return read_ply(path);
+    if (ext == "obj") return read_obj(path);
+    if (ext == "off") return read_off(path);
+    fail(path, "unknown output extension '" + ext + "' (expected .ply, .obj or .off)");
+}
+
+std::vector<uint32_t> read_index_file(const std::string& path) {
+    const std::string text = slurp(path);
+    std::vector<uint32_t> out;
+    for (std::string_view tok : split_ws(text)) {
+        long long v = 0;
+        if (!parse_long(tok, v) || v < 0 || v > 0xffffffffLL)
+            fail(path, "index " + std::to_string(out.size()) + ": bad token '" + std::string(tok) + "'");
+        out.push_back(static_cast<uint32_t>(v));
+    }
+    return out;
+}
+
+std::vector<std::vector<uint32_t>> read_cycles_file(const std::string& path) {
+    const std::string text = slurp(path);
+    nlohmann::json j;
+    try {
+        j = nlohmann::json::parse(text);
+    } catch (const nlohmann::json::exception& e) {
+        fail(path, std::string("not valid JSON: ") + e.what());
+    }
+    if (!j.is_object() || !j.contains("cycles") || !j["cycles"].is_array())
+        fail(path, "expected an object with an array \"cycles\"");
+    std::vector<std::vector<uint32_t>> cycles;
+    for (size_t c = 0; c < j["cycles"].size(); ++c) {
+        const auto& arr = j["cycles"][c];
+        if (!arr.is_array()) fail(path, "cycle " + std::to_string(c) + " is not an array");
+        std::vector<uint32_t> cyc;
+        for (const auto& x : arr) {
+            if (!x.is_number_unsigned() || x.get<uint64_t>() > 0xffffffffULL)
+                fail(path, "cycle " + std::to_string(c) + ": entries must be face indices");
+            cyc.push_back(static_cast<uint32_t>(x.get<uint64_t>()));
+        }
+        cycles.push_back(std::move(cyc));
+    }
+    return cycles;
+}
+
+}  // namespace singlestrip
