@@ -97,6 +97,14 @@ private:
     void absorb(uint32_t record);
     bool absorb_at_tail();
     uint32_t choose_seed() const;
+    uint32_t find_edge(uint32_t u, uint32_t v) const;
+    uint32_t face_at_vertex(uint32_t v, uint32_t avoid) const;
+    void apply_constraints();
+    [[nodiscard]] bool has_vertex(uint32_t f, uint32_t v) const {
+        const auto& cv = mesh_.corner_vertices();
+        return cv[3 * f] == v || cv[3 * f + 1] == v || cv[3 * f + 2] == v;
+    }
+    uint32_t source_ = kNone, target_ = kNone;
     void check_split_budget() const;
 };
 
@@ -375,7 +383,7 @@ void Builder::absorb(uint32_t record) {
     const uint32_t anchor = Mesh::face(ha);
     if (!striped_[host] || !in_region(anchor, region))
         throw InternalError("strip builder: deferred region " + std::to_string(region) + " has a bad anchor");
-    if (host == tail_) {  // free: the strip simply continues into the region
+    if (host == tail_ && target_ == kNone) {  // free: the strip simply continues into the region
         const uint32_t r = take_forced(host, anchor, region, kNone);
         grow(anchor, r, kNone);
         return;
@@ -393,30 +401,35 @@ void Builder::absorb(uint32_t record) {
     blocked_[3 * s.f_b + 1] = blocked_host;
     blocked_[3 * s.g_a + 1] = blocked_anchor;
     if (opt_.validate_each_split) mesh_.validate();
-    // Host children: f_a (index host, keeps the edge c->a side) and f_b (new).
     striped_[s.f_b] = 1;
     region_[s.f_b] = kNoRegion;
+    fundamental_[s.f_b] = fundamental_[host];
     region_[s.g_a] = region;
     ++region_size_[region];
-    // Which host child keeps the in-edge?
-    bool fa_is_in;
-    if (p != kNone) fa_is_in = mesh_.shared_halfedge(s.f_a, p) != kNone;
-    else fa_is_in = mesh_.shared_halfedge(s.f_a, n) == kNone;
-    const uint32_t in_child = fa_is_in ? s.f_a : s.f_b;
-    const uint32_t out_child = fa_is_in ? s.f_b : s.f_a;
-    const uint32_t first = fa_is_in ? s.g_a : s.g_b;  // anchor child next to in_child
-    const uint32_t last = fa_is_in ? s.g_b : s.g_a;
-    // Relink: p -> in_child -> out_child -> n (host's list slot is f_a).
-    if (fa_is_in) {
-        insert_after(s.f_a, s.f_b);
-    } else {
-        // f_b goes before f_a.
-        if (p == kNone) insert_after(kNone, s.f_b);
-        else insert_after(p, s.f_b);
+    // c0 keeps the host's in-edge, c1 its out-edge; a0 is the anchor child beside c0.
+    bool fa_first;
+    if (p != kNone) fa_first = mesh_.shared_halfedge(s.f_a, p) != kNone;
+    else if (n != kNone) fa_first = mesh_.shared_halfedge(s.f_a, n) == kNone;
+    else fa_first = source_ == kNone || has_vertex(s.f_a, source_);
+    const uint32_t c0 = fa_first ? s.f_a : s.f_b, c1 = fa_first ? s.f_b : s.f_a;
+    const uint32_t a0 = fa_first ? s.g_a : s.g_b, a1 = fa_first ? s.g_b : s.g_a;
+    // Host slot (index f_a) becomes c0 -> c1.
+    if (fa_first) insert_after(s.f_a, s.f_b);
+    else insert_after(p, s.f_b);  // p == kNone inserts at the head
+    // Normally the region goes between the children: c0 -> a0 ... a1 -> c1. At the ends of the
+    // strip the region may instead go first (a1 ... a0 -> c0 -> c1) or last (c0 -> c1 -> a1 ... a0)
+    // so that the first face keeps the source vertex and the last face the target (§5.2).
+    uint32_t cursor = c0, first = a0, last = a1;
+    if (p == kNone && source_ != kNone && !has_vertex(c0, source_)) {
+        cursor = kNone;
+        first = a1;
+        last = a0;
+    } else if (n == kNone && target_ != kNone && !has_vertex(c1, target_)) {
+        cursor = c1;
+        first = a1;
+        last = a0;
     }
-    fundamental_[s.f_b] = fundamental_[host];
-    (void)out_child;
-    const uint32_t r = take_forced(in_child, first, region, last);
+    const uint32_t r = take_forced(cursor, first, region, last);
     grow(first, r, last);
 }
 
@@ -455,23 +468,161 @@ uint32_t Builder::choose_seed() const {
     return best;
 }
 
+// Finds the half-edge u->v or v->u, or kNone. O(degree of u).
+uint32_t Builder::find_edge(uint32_t u, uint32_t v) const {
+    if (u >= mesh_.num_vertices() || v >= mesh_.num_vertices()) return kNone;
+    const uint32_t h0 = mesh_.vertex_halfedge(u);
+    if (h0 == kNone) return kNone;
+    // Rotate both ways around u (the fan may be open).
+    uint32_t h = h0;
+    for (uint32_t guard = 0; guard <= mesh_.num_halfedges(); ++guard) {
+        if (mesh_.to(h) == v) return h;
+        if (mesh_.from(Mesh::prev(h)) == v) return Mesh::prev(h);
+        const uint32_t t = mesh_.twin(Mesh::prev(h));
+        if (t == kNone || t == h0) break;
+        h = t;
+    }
+    h = h0;
+    for (uint32_t guard = 0; guard <= mesh_.num_halfedges(); ++guard) {
+        const uint32_t t = mesh_.twin(h);
+        if (t == kNone) break;
+        h = Mesh::next(t);
+        if (h == h0) break;
+        if (mesh_.to(h) == v) return h;
+        if (mesh_.from(Mesh::prev(h)) == v) return Mesh::prev(h);
+    }
+    return kNone;
+}
+
+void Builder::apply_constraints() {
+    size_t index = 0;
+    for (const auto& [u, v] : opt_.constraint_edges) {
+        const uint32_t h = find_edge(u, v);
+        if (h == kNone)
+            throw RequestError("constraint " + std::to_string(index) + ": (" + std::to_string(u) + ", " +
+                               std::to_string(v) + ") is not an edge of the mesh");
+        blocked_[h] = 1;
+        if (mesh_.twin(h) != kNone) blocked_[mesh_.twin(h)] = 1;
+        ++index;
+    }
+    if (opt_.constraint_edges.empty()) return;
+    // The faces must stay connected through edges that are not constraints.
+    const uint32_t nf = mesh_.num_faces();
+    std::vector<uint32_t> piece(nf, kNone), sizes;
+    std::vector<uint32_t> stack;
+    for (uint32_t f0 = 0; f0 < nf; ++f0) {
+        if (piece[f0] != kNone) continue;
+        const uint32_t id = static_cast<uint32_t>(sizes.size());
+        sizes.push_back(0);
+        piece[f0] = id;
+        stack.push_back(f0);
+        while (!stack.empty()) {
+            const uint32_t f = stack.back();
+            stack.pop_back();
+            ++sizes[id];
+            for (uint32_t k = 0; k < 3; ++k) {
+                const uint32_t h = 3 * f + k;
+                if (!passable(h)) continue;
+                const uint32_t g = mesh_.neighbor(h);
+                if (piece[g] == kNone) {
+                    piece[g] = id;
+                    stack.push_back(g);
+                }
+            }
+        }
+    }
+    if (sizes.size() > 1) {
+        std::sort(sizes.rbegin(), sizes.rend());
+        std::string list;
+        for (size_t i = 0; i < sizes.size() && i < 10; ++i) list += (i ? ", " : "") + std::to_string(sizes[i]);
+        if (sizes.size() > 10) list += ", ...";
+        throw RequestError("the constraint edges cut the surface into " + std::to_string(sizes.size()) +
+                           " pieces (faces per piece: " + list + "); one strip cannot cover them without crossing a constraint");
+    }
+}
+
+// A face incident to vertex v, preferring faces with more blocked sides; `avoid` is skipped
+// when another face exists. kNone if v has no face.
+uint32_t Builder::face_at_vertex(uint32_t v, uint32_t avoid) const {
+    const uint32_t h0 = mesh_.vertex_halfedge(v);
+    if (h0 == kNone) return kNone;
+    uint32_t best = kNone;
+    int best_score = -1;
+    auto consider = [&](uint32_t h) {
+        const uint32_t f = Mesh::face(h);
+        int score = 0;
+        for (uint32_t k = 0; k < 3; ++k) score += !passable(3 * f + k);
+        if (f == avoid) score = -1;
+        if (score > best_score || best == kNone) {
+            best_score = score;
+            best = f;
+        }
+    };
+    uint32_t h = h0;
+    for (uint32_t guard = 0; guard <= mesh_.num_halfedges(); ++guard) {
+        consider(h);
+        const uint32_t t = mesh_.twin(Mesh::prev(h));
+        if (t == kNone || t == h0) break;
+        h = t;
+    }
+    h = h0;
+    for (uint32_t guard = 0; guard <= mesh_.num_halfedges(); ++guard) {
+        const uint32_t t = mesh_.twin(h);
+        if (t == kNone) break;
+        h = Mesh::next(t);
+        if (h == h0) break;
+        consider(h);
+    }
+    return best;
+}
+
 StripResult Builder::run() {
     const uint32_t nf = mesh_.num_faces();
     if (nf == 0) throw InputError("mesh has no faces");
     if (opt_.seed_face && *opt_.seed_face >= nf)
         throw RequestError("seed face " + std::to_string(*opt_.seed_face) + " is out of range (mesh has " +
                            std::to_string(nf) + " faces)");
+    auto check_vertex = [&](const char* what, uint32_t v) {
+        if (v >= mesh_.num_input_vertices())
+            throw RequestError(std::string(what) + " vertex " + std::to_string(v) + " is out of range (mesh has " +
+                               std::to_string(mesh_.num_input_vertices()) + " vertices)");
+        if (mesh_.vertex_halfedge(v) == kNone)
+            throw RequestError(std::string(what) + " vertex " + std::to_string(v) + " is not used by any face");
+    };
+    if (opt_.source) check_vertex("source", *opt_.source);
+    if (opt_.target) check_vertex("target", *opt_.target);
+    if (opt_.seed_face && opt_.source) {
+        const uint32_t f = *opt_.seed_face;
+        const auto& cv = mesh_.corner_vertices();
+        if (cv[3 * f] != *opt_.source && cv[3 * f + 1] != *opt_.source && cv[3 * f + 2] != *opt_.source)
+            throw RequestError("seed face " + std::to_string(f) + " is not incident to source vertex " +
+                               std::to_string(*opt_.source));
+    }
     grow_arrays();
+    apply_constraints();
     stats_.input_triangles = nf;
     stats_.boundary_loops = mesh_.num_boundary_loops();
     stats_.genus = mesh_.genus();
+    source_ = opt_.source ? *opt_.source : kNone;
+    target_ = opt_.target ? *opt_.target : kNone;
 
     const uint32_t r0 = new_region(nf);
     std::fill(region_.begin(), region_.end(), r0);
-    const uint32_t seed = choose_seed();
+    const uint32_t seed = opt_.seed_face ? *opt_.seed_face
+                          : opt_.source  ? face_at_vertex(*opt_.source, kNone)
+                                         : choose_seed();
+    uint32_t dest = kNone;
+    if (opt_.target) {
+        dest = face_at_vertex(*opt_.target, seed);
+        if (dest == seed && nf > 1)
+            throw RequestError("cannot end at target vertex " + std::to_string(*opt_.target) +
+                               ": its only face is the first face of the strip");
+        if (nf == 1) dest = kNone;
+    }
     take(kNone, seed);
-    // The seed may cut U apart (up to three pieces): keep the piece of one neighbour as the
-    // region to grow and defer the others.
+    // The seed may cut U apart (up to three pieces): label each piece; grow the one holding the
+    // destination (or the first) and defer the others, anchored at the seed.
+    uint32_t grow_region = r0;
     {
         uint32_t nbr[3], he[3], cnt = 0;
         for (uint32_t k = 0; k < 3; ++k) {
@@ -481,49 +632,66 @@ StripResult Builder::run() {
                 he[cnt++] = 3 * seed + k;
             }
         }
-        if (cnt > 1) {
-            // Flood from the first neighbour; unreached neighbours start pieces of their own.
-            std::vector<uint32_t> stack{nbr[0]};
-            stamp_base_ += 2;
-            stamp_[nbr[0]] = stamp_base_;
-            while (!stack.empty()) {
-                const uint32_t f = stack.back();
-                stack.pop_back();
-                for (uint32_t k = 0; k < 3; ++k) {
-                    const uint32_t g = open_neighbor(3 * f + k, r0);
-                    if (g != kNone && stamp_[g] != stamp_base_) {
-                        stamp_[g] = stamp_base_;
-                        stack.push_back(g);
-                    }
-                }
-            }
-            for (uint32_t i = 1; i < cnt; ++i) {
-                if (stamp_[nbr[i]] == stamp_base_ || region_[nbr[i]] != r0) continue;
-                const uint32_t r = new_region(0);
-                std::vector<uint32_t> st{nbr[i]};
-                region_[nbr[i]] = r;
-                while (!st.empty()) {
-                    const uint32_t f = st.back();
-                    st.pop_back();
-                    ++region_size_[r];
-                    --region_size_[r0];
+        uint32_t piece_region[3] = {r0, kNone, kNone};
+        for (uint32_t i = 1; i < cnt; ++i) {
+            // Flood the pieces of the earlier neighbours first time only (lazy): a piece already
+            // relabelled is recognised by its region.
+            if (i == 1) {
+                std::vector<uint32_t> stack{nbr[0]};
+                stamp_base_ += 2;
+                stamp_[nbr[0]] = stamp_base_;
+                while (!stack.empty()) {
+                    const uint32_t f = stack.back();
+                    stack.pop_back();
                     for (uint32_t k = 0; k < 3; ++k) {
                         const uint32_t g = open_neighbor(3 * f + k, r0);
-                        if (g != kNone) {
-                            region_[g] = r;
-                            st.push_back(g);
+                        if (g != kNone && stamp_[g] != stamp_base_) {
+                            stamp_[g] = stamp_base_;
+                            stack.push_back(g);
                         }
                     }
                 }
-                defer(r, mesh_.twin(he[i]));
+            }
+            if (stamp_[nbr[i]] == stamp_base_) {
+                piece_region[i] = r0;
+                continue;
+            }
+            if (region_[nbr[i]] != r0) {
+                piece_region[i] = region_[nbr[i]];
+                continue;
+            }
+            const uint32_t r = new_region(0);
+            piece_region[i] = r;
+            std::vector<uint32_t> st{nbr[i]};
+            region_[nbr[i]] = r;
+            while (!st.empty()) {
+                const uint32_t f = st.back();
+                st.pop_back();
+                ++region_size_[r];
+                --region_size_[r0];
+                for (uint32_t k = 0; k < 3; ++k) {
+                    const uint32_t g = open_neighbor(3 * f + k, r0);
+                    if (g != kNone) {
+                        region_[g] = r;
+                        st.push_back(g);
+                    }
+                }
             }
         }
+        if (dest != kNone) grow_region = region_[dest];
+        std::vector<uint32_t> done_regions{grow_region};
+        for (uint32_t i = 0; i < cnt; ++i) {
+            const uint32_t r = piece_region[i];
+            if (std::find(done_regions.begin(), done_regions.end(), r) != done_regions.end()) continue;
+            done_regions.push_back(r);
+            defer(r, mesh_.twin(he[i]));
+        }
     }
-    grow(seed, r0, kNone);
+    grow(seed, grow_region, dest);
     // Splice deferred regions: first any that touch the tail (free), then the rest, newest first
     // (absorbing one may defer more).
     for (;;) {
-        if (absorb_at_tail()) continue;
+        if (target_ == kNone && absorb_at_tail()) continue;
         uint32_t rec = kNone;
         while (!deferred_.empty()) {
             if (!deferred_.back().done) {
