@@ -1,0 +1,245 @@
+// singlestrip — shortest GL_TRIANGLE_STRIP encoding of a face sequence.
+//
+// Dynamic programming over faces. After face j has been emitted the only things that matter for
+// the future are the last two indices (an ordered pair of f_j's vertices, 6 choices) and the
+// parity of the next triangle index (2): 12 states. Between f_j and f_{j+1} we may append
+// indices that form degenerate (skipped) triangles; the first non-degenerate triangle formed
+// must be f_{j+1} with its winding. The cheapest way from each state of f_j to each state of
+// f_{j+1} is a shortest path (BFS) over (last two indices, parity) with letters taken from the
+// vertices of f_j and f_{j+1}: an index outside them can only sit inside degenerate triangles
+// and any vertex already present does that job as well. The BFS depends only on how f_{j+1}
+// overlaps f_j, so its 12 x 12 cost matrix is cached per overlap pattern (at most 64) and the
+// DP costs O(144) per face. Back-pointers keep the predecessor state; the index runs between
+// faces are recomputed by BFS during reconstruction, so memory is 12 bytes per face.
+#include <cstddef>  // before encode.hpp, which uses size_t without including it
+
+#include "singlestrip/encode.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <limits>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "singlestrip/errors.hpp"
+
+namespace singlestrip {
+namespace {
+
+constexpr int kStates = 12;                // ordered pair slot (6) x parity (2)
+constexpr uint8_t kUnreachable = 0xff;
+constexpr uint64_t kInf = std::numeric_limits<uint64_t>::max() / 4;
+
+/// Ordered pair of distinct positions (ix, iy) in a triangle <-> slot 0..5.
+int pair_slot(int ix, int iy) { return ix * 2 + (iy > ix ? iy - 1 : iy); }
+std::pair<int, int> slot_pair(int slot) {
+    const int ix = slot / 2, r = slot % 2;
+    return {ix, r < ix ? r : r + 1};
+}
+
+bool same_winding(const Triangle& t, const Triangle& f) {
+    for (int r = 0; r < 3; ++r)
+        if (t[0] == f[r] && t[1] == f[(r + 1) % 3] && t[2] == f[(r + 2) % 3]) return true;
+    return false;
+}
+
+/// Search graph between two faces, on labels 0..m-1 (labels 0..2 = the previous face's
+/// vertices, 3 = the new face's other vertex). Node (x, y, p) = last two labels and parity of
+/// the next triangle; terminal nodes (one per state of the target face) end the search.
+struct Graph {
+    int m;
+    Triangle target;  // labels
+    [[nodiscard]] int nodes() const { return m * m * 2; }
+    [[nodiscard]] int node(int x, int y, int p) const { return (x * m + y) * 2 + p; }
+
+    struct Search {
+        std::array<uint8_t, 6 * 6 * 2 + kStates> dist;
+        std::array<int16_t, 6 * 6 * 2 + kStates> parent;
+        std::array<int8_t, 6 * 6 * 2 + kStates> letter;
+    };
+
+    /// BFS from one node; dist of terminal t is at nodes() + t.
+    [[nodiscard]] Search bfs(int source) const {
+        Search s;
+        s.dist.fill(kUnreachable);
+        s.parent.fill(-1);
+        s.letter.fill(-1);
+        std::array<int, 6 * 6 * 2> queue{};
+        int head = 0, tail = 0;
+        s.dist[source] = 0;
+        queue[tail++] = source;
+        while (head < tail) {
+            const int u = queue[head++];
+            const int p = u % 2, y = (u / 2) % m, x = u / 2 / m;
+            for (int z = 0; z < m; ++z) {
+                int v;
+                if (x == y || y == z || x == z) {
+                    v = node(y, z, 1 - p);  // degenerate: skipped by the decoder
+                } else {
+                    const Triangle tri = p == 0 ? Triangle{uint32_t(x), uint32_t(y), uint32_t(z)}
+                                                : Triangle{uint32_t(y), uint32_t(x), uint32_t(z)};
+                    if (!same_winding(tri, target)) continue;  // a stray triangle: forbidden
+                    int iy = 0, iz = 0;
+                    for (int k = 0; k < 3; ++k) {
+                        if (target[k] == uint32_t(y)) iy = k;
+                        if (target[k] == uint32_t(z)) iz = k;
+                    }
+                    v = nodes() + pair_slot(iy, iz) * 2 + (1 - p);
+                }
+                if (s.dist[v] != kUnreachable) continue;
+                s.dist[v] = static_cast<uint8_t>(s.dist[u] + 1);
+                s.parent[v] = static_cast<int16_t>(u);
+                s.letter[v] = static_cast<int8_t>(z);
+                if (v < nodes()) queue[tail++] = v;
+            }
+        }
+        return s;
+    }
+
+    /// Labels appended on the BFS path from the search's source to node `to`, in order.
+    static void path(const Search& s, int to, std::vector<int>& out) {
+        const size_t start = out.size();
+        for (int v = to; s.parent[v] >= 0; v = s.parent[v]) out.push_back(s.letter[v]);
+        std::reverse(out.begin() + static_cast<std::ptrdiff_t>(start), out.end());
+    }
+};
+
+using Matrix = std::array<std::array<uint8_t, kStates>, kStates>;  // [from state][to state]
+
+/// Labels of `next` relative to `prev`; throws if they do not share an edge.
+Triangle relabel(const Triangle& prev, const Triangle& next, size_t j) {
+    Triangle labels{};
+    int shared = 0;
+    for (int k = 0; k < 3; ++k) {
+        labels[k] = 3;
+        for (int i = 0; i < 3; ++i)
+            if (next[k] == prev[i]) labels[k] = static_cast<uint32_t>(i), ++shared;
+    }
+    if (shared < 2)
+        throw InternalError("encode_triangle_strip: faces " + std::to_string(j) + " and " +
+                            std::to_string(j + 1) + " do not share an edge");
+    return labels;
+}
+
+int pattern_key(const Triangle& labels) { return static_cast<int>(labels[0] * 16 + labels[1] * 4 + labels[2]); }
+
+Graph graph_for(const Triangle& labels) {
+    const bool new_vertex = labels[0] == 3 || labels[1] == 3 || labels[2] == 3;
+    return Graph{new_vertex ? 4 : 3, labels};
+}
+
+int start_node(const Graph& g, int state) {
+    const auto [ix, iy] = slot_pair(state / 2);
+    return g.node(ix, iy, state % 2);
+}
+
+Matrix transition_matrix(const Graph& g) {
+    Matrix mat{};
+    for (int from = 0; from < kStates; ++from) {
+        const Graph::Search s = g.bfs(start_node(g, from));
+        for (int to = 0; to < kStates; ++to) mat[from][to] = s.dist[g.nodes() + to];
+    }
+    return mat;
+}
+
+void check_face(const Triangle& f, size_t j) {
+    if (f[0] == f[1] || f[1] == f[2] || f[0] == f[2])
+        throw InternalError("encode_triangle_strip: face " + std::to_string(j) + " repeats a vertex");
+}
+
+}  // namespace
+
+std::vector<uint32_t> encode_triangle_strip(const std::vector<Triangle>& faces) {
+    const size_t n = faces.size();
+    if (n == 0) return {};
+    for (size_t j = 0; j < n; ++j) check_face(faces[j], j);
+
+    // First face: any two leading labels (parity 0), then the BFS; labels are f_0's positions.
+    const Graph first{3, Triangle{0, 1, 2}};
+    std::array<uint64_t, kStates> cost{};
+    std::vector<std::array<uint8_t, kStates>> back(n);
+    cost.fill(kInf);
+    for (int u = 0; u < 3; ++u)
+        for (int v = 0; v < 3; ++v) {
+            const int src = first.node(u, v, 0);
+            const Graph::Search s = first.bfs(src);
+            for (int t = 0; t < kStates; ++t) {
+                const uint8_t d = s.dist[first.nodes() + t];
+                if (d != kUnreachable && 2u + d < cost[t]) {
+                    cost[t] = 2u + d;
+                    back[0][t] = static_cast<uint8_t>(src);
+                }
+            }
+        }
+
+    std::array<std::optional<Matrix>, 64> cache;
+    for (size_t j = 0; j + 1 < n; ++j) {
+        const Triangle labels = relabel(faces[j], faces[j + 1], j);
+        std::optional<Matrix>& mat = cache[pattern_key(labels)];
+        if (!mat) mat = transition_matrix(graph_for(labels));
+        std::array<uint64_t, kStates> next;
+        next.fill(kInf);
+        for (int from = 0; from < kStates; ++from) {
+            if (cost[from] >= kInf) continue;
+            for (int to = 0; to < kStates; ++to) {
+                const uint8_t d = (*mat)[from][to];
+                if (d != kUnreachable && cost[from] + d < next[to]) {
+                    next[to] = cost[from] + d;
+                    back[j + 1][to] = static_cast<uint8_t>(from);
+                }
+            }
+        }
+        cost = next;
+    }
+
+    int state = 0;
+    for (int t = 1; t < kStates; ++t)
+        if (cost[t] < cost[state]) state = t;
+    if (cost[state] >= kInf) throw InternalError("encode_triangle_strip: no encoding found");
+
+    // Reconstruct back to front: runs of labels per step, mapped to vertex ids.
+    std::vector<std::vector<uint32_t>> runs(n);
+    std::vector<int> labels_path;
+    for (size_t j = n - 1; j >= 1; --j) {
+        const Triangle labels = relabel(faces[j - 1], faces[j], j - 1);
+        const Graph g = graph_for(labels);
+        const int from = back[j][state];
+        const Graph::Search s = g.bfs(start_node(g, from));
+        labels_path.clear();
+        Graph::path(s, g.nodes() + state, labels_path);
+        uint32_t extra = 0;
+        for (int k = 0; k < 3; ++k)
+            if (labels[k] == 3) extra = faces[j][k];
+        for (int l : labels_path) runs[j].push_back(l == 3 ? extra : faces[j - 1][l]);
+        state = from;
+    }
+    {
+        const int src = back[0][state];
+        const Graph::Search s = first.bfs(src);
+        labels_path.clear();
+        const int u = src / 2 / 3, v = (src / 2) % 3;
+        labels_path.push_back(u);
+        labels_path.push_back(v);
+        Graph::path(s, first.nodes() + state, labels_path);
+        for (int l : labels_path) runs[0].push_back(faces[0][l]);
+    }
+    std::vector<uint32_t> out;
+    out.reserve(n + 2);
+    for (const auto& r : runs) out.insert(out.end(), r.begin(), r.end());
+    return out;
+}
+
+std::vector<Triangle> decode_triangle_strip(const std::vector<uint32_t>& indices) {
+    std::vector<Triangle> out;
+    for (size_t i = 0; i + 2 < indices.size(); ++i) {
+        const uint32_t a = indices[i], b = indices[i + 1], c = indices[i + 2];
+        if (a == b || b == c || a == c) continue;
+        out.push_back(i % 2 == 0 ? Triangle{a, b, c} : Triangle{b, a, c});
+    }
+    return out;
+}
+
+}  // namespace singlestrip
