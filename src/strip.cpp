@@ -58,6 +58,7 @@ private:
 
     // scratch
     std::vector<uint32_t> side_[2];
+    std::vector<uint32_t> scratch_;
 
     [[nodiscard]] bool passable(uint32_t h) const { return !mesh_.is_boundary(h) && !blocked_[h]; }
     [[nodiscard]] bool in_region(uint32_t f, uint32_t r) const { return f != kNone && !striped_[f] && region_[f] == r; }
@@ -96,6 +97,7 @@ private:
     void defer(uint32_t region, uint32_t anchor);
     void absorb(uint32_t record);
     bool absorb_at_tail();
+    bool try_detour(uint32_t region, uint32_t anchor);
     uint32_t choose_seed() const;
     uint32_t find_edge(uint32_t u, uint32_t v) const;
     uint32_t face_at_vertex(uint32_t v, uint32_t avoid) const;
@@ -383,6 +385,7 @@ void Builder::absorb(uint32_t record) {
     const uint32_t anchor = Mesh::face(ha);
     if (!striped_[host] || !in_region(anchor, region))
         throw InternalError("strip builder: deferred region " + std::to_string(region) + " has a bad anchor");
+    if (try_detour(region, anchor)) return;
     if (host == tail_ && target_ == kNone) {  // free: the strip simply continues into the region
         const uint32_t r = take_forced(host, anchor, region, kNone);
         grow(anchor, r, kNone);
@@ -431,6 +434,48 @@ void Builder::absorb(uint32_t record) {
     }
     const uint32_t r = take_forced(cursor, first, region, last);
     grow(first, r, last);
+}
+
+// Zero-cost splice: if two consecutive strip faces x -> y touch the region at faces r1 (beside x)
+// and r2 (beside y), with r1 != r2 unless the region is that single face, the region's own
+// strip r1 ... r2 goes between them and no split is needed. O(region size).
+bool Builder::try_detour(uint32_t region, uint32_t anchor) {
+    scratch_.clear();
+    scratch_.push_back(anchor);
+    stamp_base_ += 2;
+    stamp_[anchor] = stamp_base_;
+    for (size_t i = 0; i < scratch_.size(); ++i) {
+        const uint32_t f = scratch_[i];
+        for (uint32_t k = 0; k < 3; ++k) {
+            const uint32_t g = open_neighbor(3 * f + k, region);
+            if (g != kNone && stamp_[g] != stamp_base_) {
+                stamp_[g] = stamp_base_;
+                scratch_.push_back(g);
+            }
+        }
+    }
+    const bool single = scratch_.size() == 1;
+    for (const uint32_t r1 : scratch_) {
+        for (uint32_t k = 0; k < 3; ++k) {
+            const uint32_t h = 3 * r1 + k;
+            if (!passable(h)) continue;
+            const uint32_t x = mesh_.neighbor(h);
+            if (!striped_[x]) continue;
+            const uint32_t y = next_[x];
+            if (y == kNone) continue;
+            for (uint32_t j = 0; j < 3; ++j) {
+                const uint32_t hy = 3 * y + j;
+                if (!passable(hy)) continue;
+                const uint32_t r2 = mesh_.neighbor(hy);
+                if (!in_region(r2, region) || (r2 == r1) != single) continue;
+                ++stats_.detours;
+                const uint32_t r = take_forced(x, r1, region, single ? kNone : r2);
+                grow(r1, r, single ? kNone : r2);
+                return true;
+            }
+        }
+    }
+    return false;
 }
 
 bool Builder::absorb_at_tail() {
