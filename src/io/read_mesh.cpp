@@ -231,7 +231,8 @@ std::optional<std::string> diagnose_ply(const std::string& path) {
         if (t[0] == "property" && !elements.empty()) {
             if (t.size() > 3 && t[1] == "list") {
                 elements.back().has_list = true;
-                elements.back().list_min += ply_type_size(t[2]);  // at least the count
+                // Assume triangles: the count plus three entries.
+                elements.back().list_min += ply_type_size(t[2]) + 3 * ply_type_size(t[3]);
             } else if (t.size() > 2) {
                 elements.back().fixed += ply_type_size(t[1]);
             }
@@ -259,8 +260,8 @@ std::optional<std::string> diagnose_ply(const std::string& path) {
         for (const auto& e : elements)
             need += static_cast<std::size_t>(e.count) * (e.fixed + (e.has_list ? e.list_min : 0));
         if (have < need)
-            return "truncated PLY file: the header declares at least " + std::to_string(need) + " bytes of data but the file has only " +
-                   std::to_string(have);
+            return "truncated PLY file: " + std::to_string(nv) + " vertices and " + std::to_string(nf) + " triangles need " + std::to_string(need) +
+                   " bytes of data but the file has only " + std::to_string(have);
     }
     return std::nullopt;
 }
