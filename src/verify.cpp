@@ -778,7 +778,9 @@ VerifyReport verify(const VerifyInput& in) {
     }
 
     // ---- T-junctions: output boundary edges must tile the input boundary edges exactly
-    if (out.manifold && std::all_of(parent.begin(), parent.end(), [](uint32_t p) { return p != kNo; })) {
+    // Runs even when the output is not vertex-manifold: a T-junction leaves a crack that makes
+    // its corner vertices non-manifold, and this check names the cause.
+    {
         struct Piece {
             uint32_t input_he;
             double t;
@@ -786,8 +788,9 @@ VerifyReport verify(const VerifyInput& in) {
         };
         std::vector<Piece> pieces;
         for (uint32_t h = 0; h < 3 * F; ++h) {
-            if (out.twin[h] != kNo) continue;
-            const uint32_t f = h / 3, a = out.from(h), b = out.to(h);
+            const uint32_t f = h / 3;
+            if (!out.face_ok[f] || parent[f] == kNo || out.twin[h] != kNo) continue;
+            const uint32_t a = out.from(h), b = out.to(h);
             const uint32_t P = parent[f];
             uint32_t found = kNo;
             double ta = 0, tb = 0;
@@ -826,8 +829,6 @@ VerifyReport verify(const VerifyInput& in) {
             if (inp.twin[ih] == kNo && !covered[ih])
                 fails.add("conformity", "input boundary edge (" + std::to_string(inp.from(ih)) + "," +
                                             std::to_string(inp.to(ih)) + ") is not covered by output boundary edges");
-    } else {
-        report.notes.push_back("T-junction check skipped (output is not a manifold or parents are missing)");
     }
 
     // ---- strip: consecutive faces share an edge
