@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "singlestrip/cycles.hpp"
 #include "singlestrip/encode.hpp"
 #include "singlestrip/errors.hpp"
 #include "singlestrip/generators.hpp"
@@ -156,13 +157,11 @@ private:
 
 int run_strip(const StripArgs& a) {
     ss::output_format_for(a.output);  // unknown extension: RequestError before any work
-    if (a.cycles)
-        throw ss::RequestError("--cycles: writing fundamental cycles is not available in this build (no cycle extractor API yet)");
     Stopwatch clock;
     ss::TriangleSoup soup = load_input(a.input);
     const double t_read = clock.lap();
-    const std::string label = is_builtin(a.input) ? a.input : a.input;
-    soup = ss::prepare_soup(std::move(soup), ss::PrepareOptions{a.orient}, label);
+    // "build" = validation (and --orient) + corner table: everything between reading and stripping.
+    soup = ss::prepare_soup(std::move(soup), ss::PrepareOptions{a.orient}, a.input);
 
     ss::StripOptions opt;
     opt.seed_face = a.seed_face;
@@ -170,12 +169,13 @@ int run_strip(const StripArgs& a) {
     opt.source = a.source;
     opt.target = a.target;
     if (a.constraints) opt.constraint_edges = ss::read_constraints(*a.constraints, static_cast<uint32_t>(soup.points.size()));
-    clock.lap();
     ss::Mesh mesh = ss::Mesh::from_soup(soup);
     const double t_build = clock.lap();
     ss::StripResult result = ss::build_strip(std::move(mesh), opt);
     ss::StripArrays arrays = ss::strip_arrays(result);
     const std::vector<uint32_t> indices = ss::encode_triangle_strip(arrays.faces);
+    std::optional<ss::Cycles> cycles;
+    if (a.cycles) cycles = ss::compute_fundamental_cycles(result);
     const double t_strip = clock.lap();
 
     OutputSet outputs;
@@ -184,6 +184,10 @@ int run_strip(const StripArgs& a) {
     if (a.indices) {
         ss::write_indices(*a.indices, indices);
         outputs.done(*a.indices);
+    }
+    if (cycles) {
+        ss::write_cycles_json(*a.cycles, *cycles);
+        outputs.done(*a.cycles);
     }
     const double t_write_files = clock.lap();
 
@@ -204,6 +208,7 @@ int run_strip(const StripArgs& a) {
     r["indices_per_triangle"] = static_cast<double>(indices.size()) / in_tris;
     r["extra_percent"] = 100.0 * (static_cast<double>(st.output_triangles) - static_cast<double>(st.input_triangles)) / in_tris;
     r["options"] = {{"greedy", opt.greedy}, {"orient", a.orient}, {"constraint_edges", opt.constraint_edges.size()}};
+    if (cycles) r["cycles"] = cycles->cycles.size();
     if (a.seed_face) r["options"]["seed_face"] = *a.seed_face;
     if (a.source) r["options"]["source"] = *a.source;
     if (a.target) r["options"]["target"] = *a.target;
@@ -293,7 +298,7 @@ int main(int argc, char** argv) {
     strip->add_option("--constraints", sa.constraints, "Edges the strip must not cross: one polyline of vertex indices per line");
     strip->add_option("--source", sa.source, "The strip starts at a face incident to this input vertex");
     strip->add_option("--target", sa.target, "The strip ends at a face incident to this input vertex");
-    strip->add_option("--cycles", sa.cycles, "Write fundamental cycles as JSON");
+    strip->add_option("--cycles", sa.cycles, "Write the fundamental cycles (paper section 4) as JSON {\"cycles\": [[face, ...], ...], \"lengths\": [...]}");
 
     VerifyArgs va;
     auto* verify = app.add_subcommand("verify", "Independently check a strip output against its input (exit 5 on failure)");

@@ -267,6 +267,12 @@ struct Analysis {
         if (!orientable) oriented = false;
     }
 
+    std::size_t total_problems() const {
+        std::size_t n = (nf == 0 ? 1 : 0) + (component_sizes.size() > 1 ? 1 : 0);
+        for (const ProblemList* l : {&out_of_range, &repeated, &duplicate, &nm_edge, &nm_vertex, &inconsistent, &non_orientable}) n += l->total;
+        return n;
+    }
+
     std::vector<SoupProblem> problems() const {
         std::vector<SoupProblem> out;
         if (nf == 0) out.push_back({"no_faces", "the mesh has no faces"});
@@ -291,11 +297,18 @@ struct Analysis {
     std::unique_ptr<UnionFind> corners_;
 };
 
-std::string join_problems(const std::vector<SoupProblem>& ps, const std::string& filename) {
+/// "<file>: p1; p2; ... (and N more problems ...)"; `total` counts problems beyond the listed ones.
+std::string join_problems(const std::vector<SoupProblem>& ps, std::size_t total, const std::string& filename) {
     constexpr std::size_t kShown = 5;
     std::string msg = filename + ": ";
-    for (std::size_t i = 0; i < ps.size() && i < kShown; ++i) msg += (i ? "; " : "") + ps[i].message;
-    if (ps.size() > kShown) msg += " (and " + std::to_string(ps.size() - kShown) + " more problems; run 'singlestrip info' for all)";
+    std::size_t shown = 0;
+    for (const auto& p : ps) {
+        if (shown == kShown) break;
+        if (p.message.rfind("... and ", 0) == 0) continue;  // a cap marker, counted in `total`
+        msg += (shown ? "; " : "") + p.message;
+        ++shown;
+    }
+    if (total > shown) msg += " (and " + std::to_string(total - shown) + " more problems; run 'singlestrip info' for all)";
     return msg;
 }
 
@@ -304,8 +317,9 @@ std::string join_problems(const std::vector<SoupProblem>& ps, const std::string&
 std::vector<SoupProblem> diagnose_soup(const TriangleSoup& soup) { return Analysis(soup).problems(); }
 
 void validate_soup(const TriangleSoup& soup, const std::string& filename_for_messages) {
-    auto ps = diagnose_soup(soup);
-    if (!ps.empty()) throw InputError(join_problems(ps, filename_for_messages));
+    Analysis a(soup);
+    auto ps = a.problems();
+    if (!ps.empty()) throw InputError(join_problems(ps, a.total_problems(), filename_for_messages));
 }
 
 long long orient_soup(TriangleSoup& soup) {

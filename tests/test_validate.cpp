@@ -1,0 +1,230 @@
+// Structural diagnosis, --orient, and mesh_info on procedural, hand-made and libcgal-demo meshes.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include "cgal_data.hpp"
+#include "singlestrip/errors.hpp"
+#include "singlestrip/generators.hpp"
+#include "singlestrip/io.hpp"
+#include "singlestrip/mesh.hpp"
+#include "singlestrip/validate.hpp"
+
+using namespace singlestrip;
+
+namespace {
+
+std::string data(const std::string& name) { return std::string(SINGLESTRIP_SOURCE_DIR) + "/tests/data/" + name; }
+
+std::vector<std::string> kinds(const std::vector<SoupProblem>& ps) {
+    std::vector<std::string> k;
+    for (const auto& p : ps) k.push_back(p.kind);
+    return k;
+}
+
+bool has(const std::vector<SoupProblem>& ps, const std::string& kind, const std::vector<std::string>& needles) {
+    for (const auto& p : ps) {
+        if (p.kind != kind) continue;
+        if (std::all_of(needles.begin(), needles.end(), [&](const std::string& n) { return p.message.find(n) != std::string::npos; }))
+            return true;
+    }
+    return false;
+}
+
+std::string prepare_error(const TriangleSoup& s, const std::string& name, bool orient = false) {
+    try {
+        prepare_soup(s, PrepareOptions{orient}, name);
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "(no error)";
+}
+
+void flip(TriangleSoup& s, size_t f) { std::swap(s.triangles[f][1], s.triangles[f][2]); }
+
+}  // namespace
+
+TEST(Diagnose, ValidProceduralMeshesHaveNoProblemsAndRightTopology) {
+    struct Case {
+        const char* name;
+        TriangleSoup soup;
+        long long chi;
+        uint64_t loops;
+        long long genus;
+    };
+    const std::vector<Case> cases = {
+        {"icosphere", make_icosphere(2), 2, 0, 0},          {"torus", make_torus(12, 8), 0, 0, 1},
+        {"genus3", make_genus_surface(3, 2), -4, 0, 3},     {"disk with 3 holes", make_disk_with_holes(3, 2), -2, 4, 0},
+        {"annulus", make_annulus(8, 2), 0, 2, 0},           {"grid", make_grid_disk(4, 3), 1, 1, 0},
+        {"builtin", make_builtin_model(), -2, 0, 2},
+    };
+    for (const auto& c : cases) {
+        SCOPED_TRACE(c.name);
+        EXPECT_TRUE(diagnose_soup(c.soup).empty());
+        MeshInfo m = mesh_info(c.soup);
+        EXPECT_TRUE(m.valid());
+        EXPECT_EQ(m.components, 1u);
+        EXPECT_EQ(m.euler_characteristic, c.chi);
+        EXPECT_EQ(m.boundary_loops, c.loops);
+        ASSERT_TRUE(m.genus_valid);
+        EXPECT_EQ(m.genus, c.genus);
+        EXPECT_TRUE(m.orientable);
+        EXPECT_TRUE(m.oriented);
+        EXPECT_EQ(m.faces, c.soup.triangles.size());
+        EXPECT_EQ(m.referenced_vertices, c.soup.points.size());
+        // Counting identities that hold for any manifold: 3F = 2E - boundary edges.
+        EXPECT_EQ(3 * m.faces, 2 * m.edges - m.boundary_edges);
+        // Agreement with the mesh core, which is built independently.
+        Mesh mesh = Mesh::from_soup(prepare_soup(c.soup, {}, c.name));
+        EXPECT_EQ(mesh.num_boundary_loops(), m.boundary_loops);
+        EXPECT_EQ(mesh.euler_characteristic(), m.euler_characteristic);
+    }
+}
+
+TEST(Diagnose, EachStructuralProblemIsNamed) {
+    auto probs = [](const char* f) { return diagnose_soup(read_mesh_file(data(f))); };
+    EXPECT_TRUE(has(probs("repeated_vertex.off"), "repeated_vertex", {"face 4", "repeats a vertex"}));
+    EXPECT_TRUE(has(probs("duplicate_face.off"), "duplicate_face", {"faces 3, 4", "duplicates"}));
+    EXPECT_TRUE(has(probs("non_manifold_edge.off"), "non_manifold_edge", {"edge (0, 1)", "3 faces", "(0, 1, 2)"}));
+    const auto nmv = probs("non_manifold_vertex.off");
+    EXPECT_EQ(kinds(nmv), std::vector<std::string>{"non_manifold_vertex"});
+    EXPECT_TRUE(has(nmv, "non_manifold_vertex", {"vertex 0", "2 separate fans"}));
+    EXPECT_TRUE(has(probs("tetra_one_flipped.off"), "inconsistent_orientation", {"edge (0, 2)", "faces 0 and 2"}));
+    const auto comps = probs("two_components.off");
+    EXPECT_TRUE(has(comps, "components", {"3 edge-connected components", "4, 4, 1"}));
+}
+
+TEST(Diagnose, MoebiusIsNonOrientableAndOrientCannotFixIt) {
+    for (const TriangleSoup& s : {read_mesh_file(data("moebius.off")), make_moebius_soup(7)}) {
+        const auto ps = diagnose_soup(s);
+        EXPECT_TRUE(has(ps, "non_orientable", {"not orientable", "edge ("}));
+        MeshInfo m = mesh_info(s);
+        EXPECT_FALSE(m.orientable);
+        EXPECT_FALSE(m.genus_valid);
+        TriangleSoup copy = s;
+        EXPECT_EQ(orient_soup(copy), -1);
+        EXPECT_EQ(copy.triangles, s.triangles);
+        const std::string msg = prepare_error(s, "band.off", /*orient=*/true);
+        EXPECT_EQ(msg.rfind("band.off: ", 0), 0u) << msg;
+        EXPECT_NE(msg.find("not orientable"), std::string::npos) << msg;
+    }
+}
+
+TEST(Orient, FlipsAnOrientableMeshConsistentlyKeepingFaceZero) {
+    TriangleSoup good = make_torus(10, 6);
+    TriangleSoup bad = good;
+    // Flip a scattered subset of faces, but not face 0.
+    for (size_t f = 1; f < bad.triangles.size(); f += 3) flip(bad, f);
+    const std::string msg = prepare_error(bad, "torus.off");
+    EXPECT_EQ(msg.rfind("torus.off: ", 0), 0u) << msg;
+    EXPECT_NE(msg.find("inconsistent orientation"), std::string::npos) << msg;
+    TriangleSoup fixed = prepare_soup(bad, PrepareOptions{true}, "torus.off");
+    EXPECT_EQ(fixed.triangles, good.triangles);  // exactly the original orientation restored
+    EXPECT_NO_THROW(Mesh::from_soup(fixed).validate());
+
+    // Face 0 flipped: the whole mesh is turned to face 0's orientation.
+    TriangleSoup bad0 = good;
+    flip(bad0, 0);
+    TriangleSoup fixed0 = bad0;
+    EXPECT_EQ(orient_soup(fixed0), static_cast<long long>(good.triangles.size() - 1));
+    EXPECT_EQ(fixed0.triangles[0], bad0.triangles[0]);
+    for (size_t f = 1; f < good.triangles.size(); ++f) {
+        Triangle t = good.triangles[f];
+        std::swap(t[1], t[2]);
+        EXPECT_EQ(fixed0.triangles[f], t);
+    }
+    EXPECT_TRUE(diagnose_soup(fixed0).empty());
+}
+
+TEST(Orient, OrientDoesNotHideOtherProblems) {
+    TriangleSoup s = read_mesh_file(data("two_components.off"));
+    flip(s, 1);
+    const std::string msg = prepare_error(s, "two.off", true);
+    EXPECT_NE(msg.find("3 edge-connected components"), std::string::npos) << msg;
+    EXPECT_EQ(msg.find("orientation"), std::string::npos) << msg;
+}
+
+TEST(Diagnose, IndexOutOfRangeInSoupArrays) {
+    TriangleSoup s = make_two_triangles();
+    s.triangles[1][2] = 17;
+    EXPECT_TRUE(has(diagnose_soup(s), "index_out_of_range", {"face 1", "vertex 17", "only 4 vertices"}));
+    TriangleSoup empty;
+    EXPECT_EQ(kinds(diagnose_soup(empty)), std::vector<std::string>{"no_faces"});
+}
+
+TEST(Diagnose, ManyProblemsAreCappedAndCounted) {
+    TriangleSoup s;
+    for (uint32_t i = 0; i < 30; ++i) {  // 30 separate triangles -> one components problem
+        s.points.push_back({double(i), 0, 0});
+        s.points.push_back({double(i), 1, 0});
+        s.points.push_back({double(i), 0, 1});
+        s.triangles.push_back({3 * i, 3 * i + 1, 3 * i + 1});  // each repeats a vertex
+    }
+    const auto ps = diagnose_soup(s);
+    EXPECT_LE(ps.size(), 12u);
+    EXPECT_TRUE(has(ps, "repeated_vertex", {"and 20 more"}));
+    const std::string msg = prepare_error(s, "many.off");
+    EXPECT_NE(msg.find("and 25 more problems"), std::string::npos) << msg;
+}
+
+TEST(DiagnoseReal, BrokenCgalDemoMeshesGiveCleanErrors) {
+    struct Case {
+        const char* file;
+        const char* kind;
+        const char* needle;
+    };
+    const std::vector<Case> cases = {
+        {"blobby_3cc.off", "components", "3 edge-connected components"},
+        {"knot2.off", "components", "2 edge-connected components"},
+        {"tet-shuffled.off", "inconsistent_orientation", "both run from"},
+        {"cube-shuffled.off", "inconsistent_orientation", "both run from"},
+        {"polygon_mesh.off", "non_manifold_vertex", "separate fans"},
+        {"pig.stl", "non_manifold_vertex", "separate fans"},
+    };
+    for (const auto& c : cases) {
+        SCOPED_TRACE(c.file);
+        const std::string path = test::cgal_mesh_path(c.file);
+        if (path.empty()) GTEST_SKIP() << "libcgal-demo data not available";
+        const TriangleSoup s = read_mesh_file(path);
+        EXPECT_TRUE(has(diagnose_soup(s), c.kind, {c.needle}));
+        const std::string msg = prepare_error(s, path);
+        EXPECT_EQ(msg.rfind(path + ": ", 0), 0u) << msg;
+    }
+    // Shuffled orientations are fixable with --orient, quads included.
+    for (const char* f : {"tet-shuffled.off", "cube4-shuffled.off", "blobby-shuffled.off", "oblong-shuffled.off"}) {
+        SCOPED_TRACE(f);
+        const std::string path = test::cgal_mesh_path(f);
+        const TriangleSoup s = read_mesh_file(path);
+        TriangleSoup fixed = prepare_soup(s, PrepareOptions{true}, path);
+        EXPECT_NO_THROW(Mesh::from_soup(fixed).validate());
+        EXPECT_EQ(fixed.triangles[0], s.triangles[0]);
+    }
+    // A point cloud (no faces) is a read error.
+    const std::string b9 = test::cgal_mesh_path("b9.ply");
+    try {
+        read_mesh_file(b9);
+        ADD_FAILURE() << "b9.ply has no faces";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("no faces"), std::string::npos) << e.what();
+    }
+}
+
+TEST(DiagnoseReal, InfoMatchesKnownTopology) {
+    struct Case {
+        const char* file;
+        long long genus;
+        uint64_t loops;
+    };
+    for (const Case& c : {Case{"fandisk.off", 0, 0}, Case{"head.off", 0, 3}, Case{"eight.off", 2, 0}, Case{"cheese.off", 133, 0},
+                          Case{"elephant-with-holes.off", 3, 106}, Case{"double-torus-3-holes.off", 2, 3}}) {
+        SCOPED_TRACE(c.file);
+        const std::string path = test::cgal_mesh_path(c.file);
+        if (path.empty()) GTEST_SKIP();
+        MeshInfo m = mesh_info(read_mesh_file(path));
+        EXPECT_TRUE(m.valid());
+        EXPECT_EQ(m.genus, c.genus);
+        EXPECT_EQ(m.boundary_loops, c.loops);
+    }
+}
