@@ -8,9 +8,9 @@
 // f_{j+1} is a shortest path (BFS) over (last two indices, parity) with letters taken from the
 // vertices of f_j and f_{j+1}: an index outside them can only sit inside degenerate triangles
 // and any vertex already present does that job as well. The BFS depends only on how f_{j+1}
-// overlaps f_j, so its 12 x 12 cost matrix is cached per overlap pattern (at most 64) and the
-// DP costs O(144) per face. Back-pointers keep the predecessor state; the index runs between
-// faces are recomputed by BFS during reconstruction, so memory is 12 bytes per face.
+// overlaps f_j, so its 12 x 12 cost matrix is built once per overlap pattern (24 of them) and the
+// DP costs O(144) per face. The cache also holds each transition's run of indices (as labels),
+// so reconstruction is a table lookup per face; memory is 13 bytes per face.
 #include <cstddef>  // before encode.hpp, which uses size_t without including it
 
 #include "singlestrip/encode.hpp"
@@ -107,7 +107,22 @@ struct Graph {
     }
 };
 
-using Matrix = std::array<std::array<uint8_t, kStates>, kStates>;  // [from state][to state]
+/// Cheapest run of appended labels from one state of the previous face to one state of the next.
+struct Transition {
+    uint8_t cost = kUnreachable;
+    uint8_t len = 0;
+    std::array<int8_t, 14> labels{};  // BFS paths are at most 7 long; the first face adds 2
+};
+using Matrix = std::array<std::array<Transition, kStates>, kStates>;  // [from state][to state]
+
+void store_path(const Graph& g, const Graph::Search& s, int to, std::vector<int>& scratch, Transition& t,
+                uint8_t extra_cost) {
+    scratch.clear();
+    Graph::path(s, g.nodes() + to, scratch);
+    if (scratch.size() + t.len > t.labels.size()) throw InternalError("encode_triangle_strip: path too long");
+    for (int l : scratch) t.labels[t.len++] = static_cast<int8_t>(l);
+    t.cost = static_cast<uint8_t>(s.dist[g.nodes() + to] + extra_cost);
+}
 
 /// Labels of `next` relative to `prev`; throws if they do not share an edge.
 Triangle relabel(const Triangle& prev, const Triangle& next, size_t j) {
@@ -138,11 +153,60 @@ int start_node(const Graph& g, int state) {
 
 Matrix transition_matrix(const Graph& g) {
     Matrix mat{};
+    std::vector<int> scratch;
     for (int from = 0; from < kStates; ++from) {
         const Graph::Search s = g.bfs(start_node(g, from));
-        for (int to = 0; to < kStates; ++to) mat[from][to] = s.dist[g.nodes() + to];
+        for (int to = 0; to < kStates; ++to)
+            if (s.dist[g.nodes() + to] != kUnreachable) store_path(g, s, to, scratch, mat[from][to], 0);
     }
     return mat;
+}
+
+/// The first face: any two leading labels (next triangle has parity 0), then a BFS run.
+std::array<Transition, kStates> first_face_transitions() {
+    const Graph g{3, Triangle{0, 1, 2}};
+    std::array<Transition, kStates> best{};
+    std::vector<int> scratch;
+    for (int u = 0; u < 3; ++u)
+        for (int v = 0; v < 3; ++v) {
+            const Graph::Search s = g.bfs(g.node(u, v, 0));
+            for (int to = 0; to < kStates; ++to) {
+                const uint8_t d = s.dist[g.nodes() + to];
+                if (d == kUnreachable || d + 2 >= best[to].cost) continue;
+                Transition t;
+                t.labels[t.len++] = static_cast<int8_t>(u);
+                t.labels[t.len++] = static_cast<int8_t>(v);
+                store_path(g, s, to, scratch, t, 2);
+                best[to] = t;
+            }
+        }
+    return best;
+}
+
+/// Tables for every overlap pattern (labels distinct, in 0..3: 24 of the 64 keys), built once.
+struct Tables {
+    std::array<Transition, kStates> first;
+    std::array<std::optional<Matrix>, 64> step;
+    std::array<std::array<std::array<uint8_t, kStates>, kStates>, 64> cost{};  // step[k]'s costs, packed
+};
+
+const Tables& tables() {
+    static const Tables t = [] {
+        Tables r;
+        r.first = first_face_transitions();
+        for (uint32_t a = 0; a < 4; ++a)
+            for (uint32_t b = 0; b < 4; ++b)
+                for (uint32_t c = 0; c < 4; ++c)
+                    if (a != b && b != c && a != c) {
+                        const Triangle labels{a, b, c};
+                        const int key = pattern_key(labels);
+                        r.step[key] = transition_matrix(graph_for(labels));
+                        for (int from = 0; from < kStates; ++from)
+                            for (int to = 0; to < kStates; ++to) r.cost[key][from][to] = (*r.step[key])[from][to].cost;
+                    }
+        return r;
+    }();
+    return t;
 }
 
 void check_face(const Triangle& f, size_t j) {
@@ -157,35 +221,26 @@ std::vector<uint32_t> encode_triangle_strip(const std::vector<Triangle>& faces) 
     if (n == 0) return {};
     for (size_t j = 0; j < n; ++j) check_face(faces[j], j);
 
-    // First face: any two leading labels (parity 0), then the BFS; labels are f_0's positions.
-    const Graph first{3, Triangle{0, 1, 2}};
+    const Tables& tab = tables();
+    const std::array<Transition, kStates>& first = tab.first;
+    const std::array<std::optional<Matrix>, 64>& cache = tab.step;
+    std::vector<uint8_t> pattern(n, 0);                   // pattern key of step j-1 -> j
+    std::vector<std::array<uint8_t, kStates>> back(n);    // best predecessor state
     std::array<uint64_t, kStates> cost{};
-    std::vector<std::array<uint8_t, kStates>> back(n);
-    cost.fill(kInf);
-    for (int u = 0; u < 3; ++u)
-        for (int v = 0; v < 3; ++v) {
-            const int src = first.node(u, v, 0);
-            const Graph::Search s = first.bfs(src);
-            for (int t = 0; t < kStates; ++t) {
-                const uint8_t d = s.dist[first.nodes() + t];
-                if (d != kUnreachable && 2u + d < cost[t]) {
-                    cost[t] = 2u + d;
-                    back[0][t] = static_cast<uint8_t>(src);
-                }
-            }
-        }
+    for (int t = 0; t < kStates; ++t) cost[t] = first[t].cost == kUnreachable ? kInf : first[t].cost;
 
-    std::array<std::optional<Matrix>, 64> cache;
     for (size_t j = 0; j + 1 < n; ++j) {
         const Triangle labels = relabel(faces[j], faces[j + 1], j);
-        std::optional<Matrix>& mat = cache[pattern_key(labels)];
-        if (!mat) mat = transition_matrix(graph_for(labels));
+        const int key = pattern_key(labels);
+        pattern[j + 1] = static_cast<uint8_t>(key);
+        if (!cache[key]) throw InternalError("encode_triangle_strip: no table for an overlap pattern");
+        const auto& mat = tab.cost[key];
         std::array<uint64_t, kStates> next;
         next.fill(kInf);
         for (int from = 0; from < kStates; ++from) {
             if (cost[from] >= kInf) continue;
             for (int to = 0; to < kStates; ++to) {
-                const uint8_t d = (*mat)[from][to];
+                const uint8_t d = mat[from][to];
                 if (d != kUnreachable && cost[from] + d < next[to]) {
                     next[to] = cost[from] + d;
                     back[j + 1][to] = static_cast<uint8_t>(from);
@@ -195,40 +250,24 @@ std::vector<uint32_t> encode_triangle_strip(const std::vector<Triangle>& faces) 
         cost = next;
     }
 
-    int state = 0;
-    for (int t = 1; t < kStates; ++t)
-        if (cost[t] < cost[state]) state = t;
-    if (cost[state] >= kInf) throw InternalError("encode_triangle_strip: no encoding found");
+    std::vector<uint8_t> state(n);
+    state[n - 1] = 0;
+    for (uint8_t t = 1; t < kStates; ++t)
+        if (cost[t] < cost[state[n - 1]]) state[n - 1] = t;
+    if (cost[state[n - 1]] >= kInf) throw InternalError("encode_triangle_strip: no encoding found");
+    for (size_t j = n - 1; j >= 1; --j) state[j - 1] = back[j][state[j]];
 
-    // Reconstruct back to front: runs of labels per step, mapped to vertex ids.
-    std::vector<std::vector<uint32_t>> runs(n);
-    std::vector<int> labels_path;
-    for (size_t j = n - 1; j >= 1; --j) {
-        const Triangle labels = relabel(faces[j - 1], faces[j], j - 1);
-        const Graph g = graph_for(labels);
-        const int from = back[j][state];
-        const Graph::Search s = g.bfs(start_node(g, from));
-        labels_path.clear();
-        Graph::path(s, g.nodes() + state, labels_path);
-        uint32_t extra = 0;
-        for (int k = 0; k < 3; ++k)
-            if (labels[k] == 3) extra = faces[j][k];
-        for (int l : labels_path) runs[j].push_back(l == 3 ? extra : faces[j - 1][l]);
-        state = from;
-    }
-    {
-        const int src = back[0][state];
-        const Graph::Search s = first.bfs(src);
-        labels_path.clear();
-        const int u = src / 2 / 3, v = (src / 2) % 3;
-        labels_path.push_back(u);
-        labels_path.push_back(v);
-        Graph::path(s, first.nodes() + state, labels_path);
-        for (int l : labels_path) runs[0].push_back(faces[0][l]);
-    }
     std::vector<uint32_t> out;
-    out.reserve(n + 2);
-    for (const auto& r : runs) out.insert(out.end(), r.begin(), r.end());
+    out.reserve(static_cast<size_t>(cost[state[n - 1]]));
+    const Transition& t0 = first[state[0]];
+    for (int k = 0; k < t0.len; ++k) out.push_back(faces[0][t0.labels[k]]);
+    for (size_t j = 1; j < n; ++j) {
+        const Transition& t = (*cache[pattern[j]])[state[j - 1]][state[j]];
+        uint32_t extra = 0;  // label 3: the vertex of faces[j] that faces[j-1] lacks
+        for (uint32_t v : faces[j])
+            if (v != faces[j - 1][0] && v != faces[j - 1][1] && v != faces[j - 1][2]) extra = v;
+        for (int k = 0; k < t.len; ++k) out.push_back(t.labels[k] == 3 ? extra : faces[j - 1][t.labels[k]]);
+    }
     return out;
 }
 
