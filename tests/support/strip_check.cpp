@@ -1,0 +1,35 @@
+#include "strip_check.hpp"
+
+#include "singlestrip/encode.hpp"
+#include "singlestrip/mesh.hpp"
+
+namespace singlestrip::testing {
+
+StripCheck strip_and_verify(const TriangleSoup& soup, const StripOptions& options) {
+    StripCheck c;
+    c.result = build_strip(Mesh::from_soup(soup), options);
+    c.result.mesh.validate();
+    c.arrays = strip_arrays(c.result);
+    c.indices = encode_triangle_strip(c.arrays.faces);
+    VerifyInput in;
+    in.in_points = soup.points;
+    in.in_faces = soup.triangles;
+    in.out_points = c.arrays.points;
+    in.out_faces = c.arrays.faces;
+    in.out_parent = c.arrays.parent;
+    in.indices = c.indices;
+    in.constraints = options.constraint_edges;
+    in.source = options.source;
+    in.target = options.target;
+    c.report = verify(in);
+    return c;
+}
+
+std::string describe(const StripCheck& c) {
+    const StripStats& s = c.result.stats;
+    return "in " + std::to_string(s.input_triangles) + " out " + std::to_string(s.output_triangles) + " splits " +
+           std::to_string(s.splits) + " swaps " + std::to_string(s.swaps) + " indices " +
+           std::to_string(c.indices.size()) + "\n" + c.report.to_string();
+}
+
+}  // namespace singlestrip::testing

@@ -1,0 +1,26 @@
+// Test support: build a strip from a soup and check it with the independent verifier.
+#pragma once
+
+#include <string>
+
+#include "singlestrip/soup.hpp"
+#include "singlestrip/strip.hpp"
+#include "singlestrip/verify.hpp"
+
+namespace singlestrip::testing {
+
+struct StripCheck {
+    StripResult result;
+    StripArrays arrays;
+    std::vector<uint32_t> indices;
+    VerifyReport report;
+};
+
+/// Mesh::from_soup + build_strip + strip_arrays + encode_triangle_strip, then verify() with the
+/// indices, the options' constraints and source/target. Exceptions from the builder propagate.
+StripCheck strip_and_verify(const TriangleSoup& soup, const StripOptions& options = {});
+
+/// One-line description of a result, for failure messages.
+std::string describe(const StripCheck& check);
+
+}  // namespace singlestrip::testing

@@ -1,0 +1,112 @@
+// Mesh core: topology queries on procedural meshes and the split operation's invariants.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "singlestrip/errors.hpp"
+#include "singlestrip/generators.hpp"
+#include "singlestrip/mesh.hpp"
+
+using namespace singlestrip;
+
+namespace {
+double area(const Mesh& m, uint32_t f) {
+    const auto& a = m.position(m.from(3 * f));
+    const auto& b = m.position(m.from(3 * f + 1));
+    const auto& c = m.position(m.from(3 * f + 2));
+    const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+    const double v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+    const double x = u[1] * v[2] - u[2] * v[1], y = u[2] * v[0] - u[0] * v[2], z = u[0] * v[1] - u[1] * v[0];
+    return 0.5 * std::sqrt(x * x + y * y + z * z);
+}
+}  // namespace
+
+TEST(Mesh, TopologyOfProceduralMeshes) {
+    struct Case {
+        std::string name;
+        TriangleSoup soup;
+        long long genus;
+        uint32_t loops;
+    };
+    std::vector<Case> cases = {
+        {"icosphere", make_icosphere(2), 0, 0},
+        {"torus", make_torus(12, 8), 1, 0},
+        {"genus 3", make_genus_surface(3, 2), 3, 0},
+        {"disk with 4 holes", make_disk_with_holes(4, 2), 0, 5},
+        {"grid disk", make_grid_disk(6, 4), 0, 1},
+        {"annulus", make_annulus(12, 3), 0, 2},
+        {"genus 2 with 3 holes", make_genus_with_holes(2, 3, 3), 2, 3},
+    };
+    for (const auto& c : cases) {
+        SCOPED_TRACE(c.name);
+        const Mesh m = Mesh::from_soup(c.soup);
+        m.validate();
+        EXPECT_EQ(m.num_components(), 1u);
+        EXPECT_EQ(m.genus(), c.genus);
+        EXPECT_EQ(m.num_boundary_loops(), c.loops);
+        EXPECT_EQ(m.euler_characteristic(), 2 - 2 * c.genus - c.loops);
+        EXPECT_EQ(m.num_faces(), c.soup.triangles.size());
+        EXPECT_EQ(2 * m.num_edges() - m.num_boundary_edges(), 3 * m.num_faces());
+    }
+}
+
+TEST(Mesh, MoebiusIsRejected) {
+    EXPECT_THROW(Mesh::from_soup(make_moebius_soup(8)), InputError);
+}
+
+TEST(Mesh, NonManifoldEdgeIsRejected) {
+    TriangleSoup s;
+    s.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}};
+    s.triangles = {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}};
+    EXPECT_THROW(Mesh::from_soup(s), InputError);
+}
+
+TEST(Mesh, NonManifoldVertexIsRejected) {
+    // Two triangles touching at vertex 0 only.
+    TriangleSoup s;
+    s.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, -1, 0}};
+    s.triangles = {{0, 1, 2}, {0, 3, 4}};
+    EXPECT_THROW(Mesh::from_soup(s), InputError);
+}
+
+TEST(Mesh, RandomSplitsKeepEveryInvariant) {
+    std::mt19937 rng(5);
+    for (const auto& soup : {make_torus(8, 5), make_grid_disk(5, 4), make_genus_surface(2, 1)}) {
+        Mesh m = Mesh::from_soup(soup);
+        const long long chi = m.euler_characteristic();
+        const uint32_t loops = m.num_boundary_loops();
+        std::vector<double> parent_area(m.num_faces());
+        for (uint32_t f = 0; f < m.num_faces(); ++f) parent_area[f] = area(m, f);
+        for (int i = 0; i < 300; ++i) {
+            uint32_t h;
+            do h = rng() % m.num_halfedges();
+            while (m.is_boundary(h));
+            const uint32_t a = m.from(h), b = m.to(h);
+            const uint32_t nf = m.num_faces(), nv = m.num_vertices();
+            const SplitResult s = m.split_edge(h);
+            m.validate();
+            EXPECT_EQ(m.num_faces(), nf + 2);
+            EXPECT_EQ(m.num_vertices(), nv + 1);
+            EXPECT_EQ(s.vertex, nv);
+            for (int k = 0; k < 3; ++k)
+                EXPECT_DOUBLE_EQ(m.position(s.vertex)[k], 0.5 * (m.position(a)[k] + m.position(b)[k]));
+            EXPECT_EQ(m.parent(s.f_a), m.parent(s.f_b));
+            EXPECT_EQ(m.parent(s.g_a), m.parent(s.g_b));
+            EXPECT_NE(m.shared_halfedge(s.f_a, s.g_a), kNone);
+            EXPECT_NE(m.shared_halfedge(s.f_b, s.g_b), kNone);
+            EXPECT_NE(m.shared_halfedge(s.f_a, s.f_b), kNone);
+            EXPECT_NE(m.shared_halfedge(s.g_a, s.g_b), kNone);
+        }
+        EXPECT_EQ(m.euler_characteristic(), chi);
+        EXPECT_EQ(m.num_boundary_loops(), loops);
+        // Children tile their parents: areas add up.
+        std::vector<double> sum(parent_area.size(), 0.0);
+        for (uint32_t f = 0; f < m.num_faces(); ++f) sum[m.parent(f)] += area(m, f);
+        for (size_t p = 0; p < sum.size(); ++p) EXPECT_NEAR(sum[p], parent_area[p], 1e-9 * (1 + parent_area[p]));
+    }
+}
+
+TEST(Mesh, SplitOfABoundaryEdgeIsAnInternalError) {
+    Mesh m = Mesh::from_soup(make_single_triangle());
+    EXPECT_THROW(m.split_edge(0), InternalError);
+}
