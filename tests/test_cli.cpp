@@ -1,0 +1,206 @@
+// The command line tool end to end: exit codes, messages, outputs never partial.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "cgal_data.hpp"
+#include "singlestrip/encode.hpp"
+#include "singlestrip/io.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string data(const std::string& name) { return std::string(SINGLESTRIP_SOURCE_DIR) + "/tests/data/" + name; }
+
+struct CliRun {
+    int code = -1;
+    std::string out;  // stdout and stderr, merged
+};
+
+/// Runs the CLI with `args` (already shell-quoted where needed).
+CliRun cli(const std::string& args) {
+    const std::string cmd = std::string("'") + SINGLESTRIP_CLI_PATH + "' " + args + " 2>&1";
+    CliRun r;
+    FILE* p = ::popen(cmd.c_str(), "r");
+    if (!p) return r;
+    std::array<char, 4096> buf{};
+    size_t n;
+    while ((n = std::fread(buf.data(), 1, buf.size(), p)) > 0) r.out.append(buf.data(), n);
+    const int status = ::pclose(p);
+    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return r;
+}
+
+std::string q(const std::string& s) { return "'" + s + "'"; }
+
+struct Scratch {
+    fs::path dir;
+    explicit Scratch(const std::string& tag) {
+        dir = fs::temp_directory_path() / ("singlestrip-test-cli-" + tag + "-" + std::to_string(::getpid()));
+        fs::remove_all(dir);
+        fs::create_directories(dir);
+    }
+    ~Scratch() { fs::remove_all(dir); }
+    std::string operator/(const std::string& f) const { return (dir / f).string(); }
+    size_t count() const { return static_cast<size_t>(std::distance(fs::directory_iterator(dir), fs::directory_iterator())); }
+};
+
+std::string slurp(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+}  // namespace
+
+TEST(Cli, InfoExitCodesAndReport) {
+    CliRun ok = cli("info " + q(data("pyramid_quad.off")));
+    EXPECT_EQ(ok.code, 0) << ok.out;
+    EXPECT_NE(ok.out.find("valid for stripping:  yes"), std::string::npos) << ok.out;
+    EXPECT_NE(ok.out.find("from 5 polygons"), std::string::npos) << ok.out;
+
+    CliRun bad = cli("info " + q(data("tetra_one_flipped.off")));
+    EXPECT_EQ(bad.code, 3) << bad.out;
+    EXPECT_NE(bad.out.find("[inconsistent_orientation] edge (0, 2)"), std::string::npos) << bad.out;
+
+    CliRun fixed = cli("info --orient " + q(data("tetra_one_flipped.off")));
+    EXPECT_EQ(fixed.code, 0) << fixed.out;
+
+    CliRun js = cli("info --json " + q(data("two_components.off")));
+    EXPECT_EQ(js.code, 3) << js.out;
+    auto j = nlohmann::json::parse(js.out);
+    EXPECT_EQ(j["components"], 3);
+    EXPECT_EQ(j["valid"], false);
+    ASSERT_FALSE(j["problems"].empty());
+    EXPECT_EQ(j["problems"][0]["kind"], "components");
+
+    CliRun moebius = cli("info --orient --json " + q(data("moebius.off")));
+    EXPECT_EQ(moebius.code, 3);
+    EXPECT_EQ(nlohmann::json::parse(moebius.out)["orientable"], false);
+
+    CliRun builtin = cli("info --json builtin:genus2");
+    EXPECT_EQ(builtin.code, 0) << builtin.out;
+    EXPECT_EQ(nlohmann::json::parse(builtin.out)["genus"], 2);
+}
+
+TEST(Cli, ReadErrorsExitThreeWithMessage) {
+    for (const char* f : {"empty.off", "nan.off", "index_out_of_range.off", "truncated_binary.stl", "missing.off"}) {
+        SCOPED_TRACE(f);
+        CliRun r = cli("info " + q(data(f)));
+        EXPECT_EQ(r.code, 3) << r.out;
+        EXPECT_EQ(r.out.rfind("singlestrip: error: " + data(f) + ": ", 0), 0u) << r.out;
+    }
+}
+
+TEST(Cli, UsageErrorsExitTwo) {
+    EXPECT_EQ(cli("").code, 2);
+    EXPECT_EQ(cli("strip").code, 2);
+    EXPECT_EQ(cli("info a.off --no-such-option").code, 2);
+    EXPECT_EQ(cli("strip " + q(data("tetra.off")) + " -o x.ply --seed-face notanumber").code, 2);
+    EXPECT_EQ(cli("--help").code, 0);
+}
+
+TEST(Cli, StripWritesConsistentOutputsAndReport) {
+    Scratch s("strip");
+    CliRun r = cli("strip " + q(data("pyramid_slashes.obj")) + " -o " + q(s / "o.ply") + " --indices " + q(s / "i.txt") + " --report " +
+                q(s / "r.json"));
+    ASSERT_EQ(r.code, 0) << r.out;
+    EXPECT_NE(r.out.find("6 ->"), std::string::npos) << r.out;  // one-line summary
+    auto rep = nlohmann::json::parse(slurp(s / "r.json"));
+    for (const char* key : {"input_triangles", "output_triangles", "splits", "swaps", "strip_indices", "genus", "boundary_loops",
+                            "fundamental_triangles", "indices_per_triangle", "extra_percent"})
+        EXPECT_TRUE(rep.contains(key)) << key;
+    for (const char* key : {"read", "build", "strip", "write"}) EXPECT_TRUE(rep["seconds"].contains(key)) << key;
+    EXPECT_EQ(rep["input_triangles"], 6);
+
+    // The output keeps the input vertices first, unchanged, and the index file decodes to its faces.
+    singlestrip::TriangleSoup in = singlestrip::read_mesh_file(data("pyramid_slashes.obj"));
+    singlestrip::TriangleSoup out = singlestrip::read_mesh_file(s / "o.ply");
+    ASSERT_GE(out.points.size(), in.points.size());
+    for (size_t v = 0; v < in.points.size(); ++v) EXPECT_EQ(out.points[v], in.points[v]);
+    EXPECT_EQ(out.triangles.size(), rep["output_triangles"].get<size_t>());
+    std::vector<uint32_t> idx;
+    std::istringstream is(slurp(s / "i.txt"));
+    for (uint32_t v; is >> v;) idx.push_back(v);
+    EXPECT_EQ(idx.size(), rep["strip_indices"].get<size_t>());
+    // Same faces in the same order, each with the same cyclic vertex order (winding).
+    auto canonical = [](std::vector<singlestrip::Triangle> ts) {
+        for (auto& t : ts) std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+        return ts;
+    };
+    EXPECT_EQ(canonical(singlestrip::decode_triangle_strip(idx)), canonical(out.triangles));
+
+    CliRun v = cli("verify " + q(data("pyramid_slashes.obj")) + " " + q(s / "o.ply") + " --indices " + q(s / "i.txt"));
+    EXPECT_EQ(v.code, 0) << v.out;
+}
+
+TEST(Cli, InvalidInputLeavesNoOutput) {
+    Scratch s("noout");
+    for (const char* f : {"moebius.off", "non_manifold_edge.off", "two_components.off", "tetra_one_flipped.off"}) {
+        SCOPED_TRACE(f);
+        CliRun r = cli("strip " + q(data(f)) + " -o " + q(s / "o.ply") + " --indices " + q(s / "i.txt") + " --report " + q(s / "r.json"));
+        EXPECT_EQ(r.code, 3) << r.out;
+        EXPECT_EQ(r.out.rfind("singlestrip: error: " + data(f) + ": ", 0), 0u) << r.out;
+        EXPECT_EQ(s.count(), 0u);
+    }
+    // --orient repairs the flipped tetrahedron.
+    CliRun r = cli("strip --orient " + q(data("tetra_one_flipped.off")) + " -o " + q(s / "o.off"));
+    EXPECT_EQ(r.code, 0) << r.out;
+    EXPECT_TRUE(fs::exists(s / "o.off"));
+}
+
+TEST(Cli, RequestAndOutputErrors) {
+    Scratch s("req");
+    CliRun ext = cli("strip " + q(data("tetra.off")) + " -o " + q(s / "o.stl"));
+    EXPECT_EQ(ext.code, 4) << ext.out;
+    CliRun seed = cli("strip " + q(data("tetra.off")) + " -o " + q(s / "o.ply") + " --seed-face 4");
+    EXPECT_EQ(seed.code, 4) << seed.out;
+    CliRun cons = cli("strip " + q(data("tetra.off")) + " -o " + q(s / "o.ply") + " --constraints " + q(data("constraints_bad_token.txt")));
+    EXPECT_EQ(cons.code, 3) << cons.out;
+    EXPECT_NE(cons.out.find("line 2"), std::string::npos) << cons.out;
+    EXPECT_EQ(s.count(), 0u);
+    // The mesh is written but the report cannot be: nothing is left behind.
+    CliRun out = cli("strip " + q(data("tetra.off")) + " -o " + q(s / "o.ply") + " --report " + q(s / "no_dir/r.json"));
+    EXPECT_EQ(out.code, 7) << out.out;
+    EXPECT_EQ(s.count(), 0u);
+}
+
+TEST(Cli, VerifyCatchesATamperedOutput) {
+    Scratch s("verify");
+    ASSERT_EQ(cli("strip " + q(data("pyramid_quad.off")) + " -o " + q(s / "o.off") + " --indices " + q(s / "i.txt")).code, 0);
+    EXPECT_EQ(cli("verify " + q(data("pyramid_quad.off")) + " " + q(s / "o.off") + " --indices " + q(s / "i.txt")).code, 0);
+    // Drop the last face: the output no longer covers the input.
+    singlestrip::TriangleSoup o = singlestrip::read_mesh_file(s / "o.off");
+    o.triangles.pop_back();
+    singlestrip::write_strip_mesh(s / "bad.off", o.points, o.triangles, std::vector<uint32_t>(o.triangles.size(), 0));
+    CliRun v = cli("verify " + q(data("pyramid_quad.off")) + " " + q(s / "bad.off"));
+    EXPECT_EQ(v.code, 5) << v.out;
+}
+
+TEST(CliReal, FandiskStripsAndVerifies) {
+    const std::string fandisk = singlestrip::test::cgal_mesh_path("fandisk.off");
+    if (fandisk.empty()) GTEST_SKIP() << "libcgal-demo data not available";
+    Scratch s("fandisk");
+    CliRun r = cli("strip " + q(fandisk) + " -o " + q(s / "f.ply") + " --indices " + q(s / "f.txt") + " --report " + q(s / "f.json"));
+    ASSERT_EQ(r.code, 0) << r.out;
+    EXPECT_EQ(nlohmann::json::parse(slurp(s / "f.json"))["input_triangles"], 12946);
+    CliRun v = cli("verify " + q(fandisk) + " " + q(s / "f.ply") + " --indices " + q(s / "f.txt"));
+    EXPECT_EQ(v.code, 0) << v.out;
+    const std::string broken = singlestrip::test::cgal_mesh_path("blobby_3cc.off");
+    CliRun b = cli("strip " + q(broken) + " -o " + q(s / "b.ply"));
+    EXPECT_EQ(b.code, 3) << b.out;
+    EXPECT_NE(b.out.find("3 edge-connected components"), std::string::npos) << b.out;
+}
