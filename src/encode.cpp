@@ -9,8 +9,8 @@
 // vertices of f_j and f_{j+1}: an index outside them can only sit inside degenerate triangles
 // and any vertex already present does that job as well. The BFS depends only on how f_{j+1}
 // overlaps f_j, so its 12 x 12 cost matrix is built once per overlap pattern (24 of them) and the
-// DP costs O(144) per face. The cache also holds each transition's run of indices (as labels),
-// so reconstruction is a table lookup per face; memory is 13 bytes per face.
+// DP costs O(144) per face. The tables also hold each transition's run of indices (as labels),
+// so reconstruction is a table lookup per face; working memory is 14 bytes per face.
 #include <cstddef>  // before encode.hpp, which uses size_t without including it
 
 #include "singlestrip/encode.hpp"
