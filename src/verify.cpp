@@ -13,7 +13,6 @@
 #include <optional>
 #include <sstream>
 #include <string>
-#include <unordered_map>
 #include <unordered_set>
 #include <utility>
 #include <vector>
@@ -78,14 +77,16 @@ struct UnionFind {
     void unite(uint32_t a, uint32_t b) { p[find(a)] = find(b); }
 };
 
-/// Half-edge adjacency of a triangle list, built with a hash map; half-edge h = 3f + i runs
-/// from faces[f][i] to faces[f][(i+1)%3]. Tolerates garbage: problems are recorded, not thrown.
+/// Half-edge adjacency of a triangle list; half-edge h = 3f + i runs from faces[f][i] to
+/// faces[f][(i+1)%3]. Outgoing half-edges are bucketed per vertex (counting sort, each bucket
+/// sorted by target), so every lookup stays inside one vertex's small bucket: O(V + F) plus
+/// O(d log d) per vertex of degree d. Tolerates garbage: problems are recorded, not thrown.
 struct Adjacency {
     size_t num_points = 0;
     std::vector<Triangle> faces;
     std::vector<bool> face_ok;       // indices in range and distinct
     std::vector<uint32_t> twin;      // kNo on the boundary (or when the edge is broken)
-    std::unordered_map<uint64_t, uint32_t> directed;  // key(from,to) -> half-edge
+    std::vector<uint32_t> out_offset, out_he;  // CSR: outgoing half-edges of each vertex, by target
     bool manifold = true;            // no repeated directed half-edge, every vertex one fan
     std::vector<std::string> problems;
     long long referenced_vertices = 0;
@@ -96,7 +97,22 @@ struct Adjacency {
 
     uint32_t from(uint32_t h) const { return faces[h / 3][h % 3]; }
     uint32_t to(uint32_t h) const { return faces[h / 3][(h % 3 + 1) % 3]; }
+    /// First half-edge running a->b, or kNo.
+    uint32_t find(uint32_t a, uint32_t b) const {
+        if (a >= num_points) return kNo;
+        auto first = out_he.begin() + out_offset[a], last = out_he.begin() + out_offset[a + 1];
+        auto it = std::lower_bound(first, last, b, [&](uint32_t h, uint32_t v) { return to(h) < v; });
+        return it != last && to(*it) == b ? *it : kNo;
+    }
+    bool has_edge(uint32_t a, uint32_t b) const { return find(a, b) != kNo || find(b, a) != kNo; }
 };
+
+bool same_vertex_set(const Triangle& a, const Triangle& b) {
+    Triangle x = a, y = b;
+    std::sort(x.begin(), x.end());
+    std::sort(y.begin(), y.end());
+    return x == y;
+}
 
 Adjacency build_adjacency(size_t num_points, const std::vector<Triangle>& faces, const std::string& what) {
     Adjacency a;
@@ -105,7 +121,6 @@ Adjacency build_adjacency(size_t num_points, const std::vector<Triangle>& faces,
     const size_t F = faces.size();
     a.face_ok.assign(F, true);
     a.twin.assign(3 * F, kNo);
-    a.directed.reserve(3 * F);
     auto problem = [&](const std::string& s) {
         a.manifold = false;
         if (a.problems.size() < kMaxPerCheck) a.problems.push_back(s);
@@ -122,47 +137,50 @@ Adjacency build_adjacency(size_t num_points, const std::vector<Triangle>& faces,
         }
         a.face_ok[f] = ok;
     }
-    // Duplicate triangles (same vertex set, either orientation).
+    // Outgoing half-edges per vertex (counting sort), each bucket sorted by target.
+    a.out_offset.assign(num_points + 1, 0);
+    for (uint32_t f = 0; f < F; ++f)
+        if (a.face_ok[f])
+            for (uint32_t v : faces[f]) ++a.out_offset[v + 1];
+    for (size_t v = 0; v < num_points; ++v) a.out_offset[v + 1] += a.out_offset[v];
+    a.out_he.resize(a.out_offset[num_points]);
     {
-        std::unordered_multimap<uint64_t, uint32_t> by_hash;
-        by_hash.reserve(F);
-        for (uint32_t f = 0; f < F; ++f) {
-            if (!a.face_ok[f]) continue;
-            Triangle s = faces[f];
-            std::sort(s.begin(), s.end());
-            const uint64_t h = (static_cast<uint64_t>(s[0]) * 0x9E3779B97F4A7C15ULL) ^ (static_cast<uint64_t>(s[1]) << 21) ^
-                               (static_cast<uint64_t>(s[2]) * 0xC2B2AE3D27D4EB4FULL);
-            auto range = by_hash.equal_range(h);
-            for (auto it = range.first; it != range.second; ++it) {
-                Triangle o = faces[it->second];
-                std::sort(o.begin(), o.end());
-                if (o == s) {
-                    problem(what + " faces " + std::to_string(it->second) + " and " + std::to_string(f) +
-                            " are the same triangle " + tri_str(faces[f]) + " (duplicate face)");
-                    break;
-                }
+        std::vector<uint32_t> fill(a.out_offset.begin(), a.out_offset.end() - 1);
+        for (uint32_t f = 0; f < F; ++f)
+            if (a.face_ok[f])
+                for (uint32_t i = 0; i < 3; ++i) a.out_he[fill[faces[f][i]]++] = 3 * f + i;
+    }
+    std::vector<bool> canonical(3 * F, false);  // first half-edge of its (from,to) group
+    for (size_t v = 0; v < num_points; ++v) {
+        auto first = a.out_he.begin() + a.out_offset[v], last = a.out_he.begin() + a.out_offset[v + 1];
+        std::sort(first, last, [&](uint32_t x, uint32_t y) { return a.to(x) != a.to(y) ? a.to(x) < a.to(y) : x < y; });
+        for (auto it = first; it != last; ++it) {
+            if (it != first && a.to(*it) == a.to(*(it - 1))) {
+                const uint32_t h = *it, g = *(it - 1);
+                if (same_vertex_set(faces[h / 3], faces[g / 3]))
+                    problem(what + " faces " + std::to_string(g / 3) + " and " + std::to_string(h / 3) +
+                            " are the same triangle " + tri_str(faces[h / 3]) + " (duplicate face)");
+                else
+                    problem(what + " edge (" + std::to_string(a.from(h)) + "," + std::to_string(a.to(h)) +
+                            ") is traversed in the same direction by faces " + std::to_string(g / 3) + " and " +
+                            std::to_string(h / 3) + " (flipped face, or more than two faces on an edge)");
+            } else {
+                canonical[*it] = true;
             }
-            by_hash.emplace(h, f);
         }
     }
-    for (uint32_t f = 0; f < F; ++f) {
-        if (!a.face_ok[f]) continue;
-        for (uint32_t i = 0; i < 3; ++i) {
-            const uint32_t h = 3 * f + i;
-            auto [it, inserted] = a.directed.emplace(key(a.from(h), a.to(h)), h);
-            if (!inserted)
-                problem(what + " edge (" + std::to_string(a.from(h)) + "," + std::to_string(a.to(h)) +
-                        ") is traversed in the same direction by faces " + std::to_string(it->second / 3) + " and " +
-                        std::to_string(f) + " (flipped face, or more than two faces on an edge)");
-        }
+    // Twins between canonical half-edges (find() returns the canonical one: symmetric).
+    for (uint32_t h = 0; h < 3 * F; ++h) {
+        if (!canonical[h]) continue;
+        const uint32_t t = a.find(a.to(h), a.from(h));
+        if (t != kNo) a.twin[h] = t;
     }
+    // A duplicate with the opposite orientation: all three edges glued to one face.
     for (uint32_t f = 0; f < F; ++f) {
-        if (!a.face_ok[f]) continue;
-        for (uint32_t i = 0; i < 3; ++i) {
-            const uint32_t h = 3 * f + i;
-            auto it = a.directed.find(key(a.to(h), a.from(h)));
-            if (it != a.directed.end() && a.directed.at(key(a.from(h), a.to(h))) == h) a.twin[h] = it->second;
-        }
+        const uint32_t t0 = a.twin[3 * f], t1 = a.twin[3 * f + 1], t2 = a.twin[3 * f + 2];
+        if (t0 != kNo && t1 != kNo && t2 != kNo && t0 / 3 == t1 / 3 && t1 / 3 == t2 / 3 && f < t0 / 3)
+            problem(what + " faces " + std::to_string(f) + " and " + std::to_string(t0 / 3) + " are the same triangle " +
+                    tri_str(faces[f]) + " with opposite orientations (duplicate face)");
     }
     // Counts: referenced vertices, edges, boundary.
     std::vector<uint32_t> first_corner(num_points, kNo);
@@ -517,17 +535,25 @@ void check_cycles(const VerifyInput& in, const Adjacency& out, long long expecte
     const size_t W = (m + 63) / 64;
     // Sparse crossing parity per edge: CSR over edges of cycles crossing an odd number of times.
     std::sort(cross.begin(), cross.end());
-    std::unordered_map<uint32_t, Bits> edge_bits;
+    std::vector<uint32_t> edge_slot(num_edges, kNo);  // edge -> row of edge_bits, kNo = crossed by none
+    std::vector<Bits> edge_bits;
     for (size_t i = 0; i < cross.size();) {
         size_t j = i;
         while (j < cross.size() && cross[j] == cross[i]) ++j;
         if ((j - i) % 2 == 1) {
-            Bits& b = edge_bits[cross[i].first];
-            if (b.empty()) b.assign(W, 0);
-            b[cross[i].second / 64] ^= uint64_t{1} << (cross[i].second % 64);
+            uint32_t& slot = edge_slot[cross[i].first];
+            if (slot == kNo) {
+                slot = static_cast<uint32_t>(edge_bits.size());
+                edge_bits.emplace_back(W, 0);
+            }
+            edge_bits[slot][cross[i].second / 64] ^= uint64_t{1} << (cross[i].second % 64);
         }
         i = j;
     }
+    auto xor_edge = [&](Bits& into, uint32_t e) {
+        if (edge_slot[e] != kNo)
+            for (size_t k = 0; k < W; ++k) into[k] ^= edge_bits[edge_slot[e]][k];
+    };
     // Tree-cotree on the output, boundary vertices identified to one super-vertex S.
     const uint32_t NV = static_cast<uint32_t>(out.num_points);
     const uint32_t S = NV;
@@ -613,8 +639,7 @@ void check_cycles(const VerifyInput& in, const Adjacency& out, long long expecte
         const uint32_t a = q(out.from(h)), b = q(out.to(h));
         const uint32_t x = a == y ? b : a;
         P[y] = P[x];
-        if (auto it = edge_bits.find(edge_id[h]); it != edge_bits.end())
-            for (size_t k = 0; k < W; ++k) P[y][k] ^= it->second[k];
+        xor_edge(P[y], edge_id[h]);
     }
     std::vector<Bits> rows;
     rows.reserve(leftovers.size());
@@ -623,8 +648,7 @@ void check_cycles(const VerifyInput& in, const Adjacency& out, long long expecte
         Bits r(W, 0);
         if (!P[a].empty() && !P[b].empty())
             for (size_t k = 0; k < W; ++k) r[k] = P[a][k] ^ P[b][k];
-        if (auto it = edge_bits.find(edge_id[h]); it != edge_bits.end())
-            for (size_t k = 0; k < W; ++k) r[k] ^= it->second[k];
+        xor_edge(r, edge_id[h]);
         rows.push_back(std::move(r));
     }
     // Null-homologous cycles: zero column.
@@ -876,12 +900,12 @@ VerifyReport verify(const VerifyInput& in) {
                 fails.add("constraints", who + ": not a pair of distinct input vertices");
                 continue;
             }
-            if (!inp.directed.count(key(a, b)) && !inp.directed.count(key(b, a))) {
+            if (!inp.has_edge(a, b)) {
                 fails.add("constraints", who + ": not an edge of the input");
                 continue;
             }
             cset.insert(ukey(a, b));
-            if (!out.directed.count(key(a, b)) && !out.directed.count(key(b, a)))
+            if (!out.has_edge(a, b))
                 fails.add("constraints", who + ": constraint edge was split (it is not an edge of the output)");
         }
         auto constraint_edges_of = [&](uint32_t P, std::vector<std::pair<uint32_t, uint32_t>>& es) {
