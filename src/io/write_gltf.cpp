@@ -1,0 +1,267 @@
+// glTF export of one strip through tinygltf. This is the one translation unit that compiles
+// tinygltf's implementation; images are never used, so stb_image is left out.
+#define TINYGLTF_IMPLEMENTATION
+#define TINYGLTF_NO_STB_IMAGE
+#define TINYGLTF_NO_STB_IMAGE_WRITE
+#define TINYGLTF_NO_EXTERNAL_IMAGE
+#include <tiny_gltf.h>
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "singlestrip/errors.hpp"
+#include "singlestrip/gltf.hpp"
+#include "singlestrip/io.hpp"
+
+namespace singlestrip {
+namespace {
+
+std::string lower_extension(const std::string& path) {
+    const auto slash = path.find_last_of("/\\");
+    const auto dot = path.find_last_of('.');
+    if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return {};
+    std::string ext = path.substr(dot);
+    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return ext;
+}
+
+template <class T>
+void append_bytes(std::vector<unsigned char>& buf, const T& v) {
+    const auto* p = reinterpret_cast<const unsigned char*>(&v);
+    buf.insert(buf.end(), p, p + sizeof(T));
+}
+
+constexpr int kArrayBuffer = 34962;
+constexpr int kElementArrayBuffer = 34963;
+
+}  // namespace
+
+bool is_gltf_path(const std::string& path) {
+    const std::string ext = lower_extension(path);
+    return ext == ".glb" || ext == ".gltf";
+}
+
+std::vector<Point3> vertex_normals(const std::vector<Point3>& points, const std::vector<Triangle>& faces) {
+    std::vector<Point3> n(points.size(), Point3{0, 0, 0});
+    for (const Triangle& f : faces) {
+        if (f[0] >= points.size() || f[1] >= points.size() || f[2] >= points.size()) continue;
+        const Point3& a = points[f[0]];
+        const Point3& b = points[f[1]];
+        const Point3& c = points[f[2]];
+        const std::array<double, 3> u{b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+        const std::array<double, 3> v{c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+        // The unnormalised cross product is twice the area times the unit normal: area weighting.
+        const Point3 cr{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+        for (uint32_t k : f)
+            for (int d = 0; d < 3; ++d) n[k][d] += cr[d];
+    }
+    for (Point3& x : n) {
+        const double len = std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
+        if (len > 0 && std::isfinite(len)) {
+            for (double& c : x) c /= len;
+        } else {
+            x = Point3{0, 0, 1};  // glTF requires unit normals even on unused vertices
+        }
+    }
+    return n;
+}
+
+void write_gltf_strip(const std::string& path, const StripArrays& a, const std::vector<uint32_t>& strip_indices) {
+    const std::string ext = lower_extension(path);
+    if (ext != ".glb" && ext != ".gltf")
+        throw RequestError(path + ": glTF output needs the extension .glb or .gltf");
+    if (strip_indices.empty() || a.faces.empty()) throw RequestError(path + ": nothing to write (empty strip)");
+    const size_t nv = a.points.size();
+    uint32_t max_index = 0;
+    for (uint32_t i : strip_indices) {
+        if (i >= nv) throw RequestError(path + ": strip index " + std::to_string(i) + " is out of range (" + std::to_string(nv) + " vertices)");
+        max_index = std::max(max_index, i);
+    }
+    const bool short_indices = max_index < 65535u;  // 65535 is the (forbidden) restart value
+
+    const std::vector<Point3> normals = vertex_normals(a.points, a.faces);
+
+    std::vector<unsigned char> buf;
+    buf.reserve(nv * 24 + strip_indices.size() * 4 + 4);
+    std::array<double, 3> pmin{}, pmax{};
+    for (int d = 0; d < 3; ++d) {
+        pmin[d] = std::numeric_limits<double>::infinity();
+        pmax[d] = -std::numeric_limits<double>::infinity();
+    }
+    for (const Point3& p : a.points) {
+        for (int d = 0; d < 3; ++d) {
+            const float f = static_cast<float>(p[d]);
+            append_bytes(buf, f);
+            // min/max must equal the stored float values exactly (the validator recomputes them).
+            pmin[d] = std::min(pmin[d], static_cast<double>(f));
+            pmax[d] = std::max(pmax[d], static_cast<double>(f));
+        }
+    }
+    const size_t normals_offset = buf.size();
+    for (const Point3& n : normals)
+        for (int d = 0; d < 3; ++d) append_bytes(buf, static_cast<float>(n[d]));
+    const size_t indices_offset = buf.size();  // multiple of 4: aligned for either index type
+    for (uint32_t i : strip_indices) {
+        if (short_indices)
+            append_bytes(buf, static_cast<uint16_t>(i));
+        else
+            append_bytes(buf, i);
+    }
+    const size_t indices_bytes = buf.size() - indices_offset;
+    while (buf.size() % 4 != 0) buf.push_back(0);
+
+    tinygltf::Model model;
+    model.asset.version = "2.0";
+    model.asset.generator = "singlestrip";
+
+    tinygltf::Buffer buffer;
+    buffer.data = std::move(buf);
+    model.buffers.push_back(std::move(buffer));
+
+    auto add_view = [&](size_t offset, size_t length, int target) {
+        tinygltf::BufferView v;
+        v.buffer = 0;
+        v.byteOffset = offset;
+        v.byteLength = length;
+        v.target = target;
+        model.bufferViews.push_back(v);
+        return static_cast<int>(model.bufferViews.size() - 1);
+    };
+    const int pos_view = add_view(0, nv * 12, kArrayBuffer);
+    const int nrm_view = add_view(normals_offset, nv * 12, kArrayBuffer);
+    const int idx_view = add_view(indices_offset, indices_bytes, kElementArrayBuffer);
+
+    tinygltf::Accessor pos;
+    pos.bufferView = pos_view;
+    pos.componentType = TINYGLTF_COMPONENT_TYPE_FLOAT;
+    pos.count = nv;
+    pos.type = TINYGLTF_TYPE_VEC3;
+    pos.minValues.assign(pmin.begin(), pmin.end());
+    pos.maxValues.assign(pmax.begin(), pmax.end());
+    model.accessors.push_back(pos);
+
+    tinygltf::Accessor nrm;
+    nrm.bufferView = nrm_view;
+    nrm.componentType = TINYGLTF_COMPONENT_TYPE_FLOAT;
+    nrm.count = nv;
+    nrm.type = TINYGLTF_TYPE_VEC3;
+    model.accessors.push_back(nrm);
+
+    tinygltf::Accessor idx;
+    idx.bufferView = idx_view;
+    idx.componentType = short_indices ? TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT : TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
+    idx.count = strip_indices.size();
+    idx.type = TINYGLTF_TYPE_SCALAR;
+    model.accessors.push_back(idx);
+
+    tinygltf::Primitive prim;
+    prim.attributes["POSITION"] = 0;
+    prim.attributes["NORMAL"] = 1;
+    prim.indices = 2;
+    prim.mode = TINYGLTF_MODE_TRIANGLE_STRIP;
+    tinygltf::Mesh mesh;
+    mesh.name = "strip";
+    mesh.primitives.push_back(prim);
+    model.meshes.push_back(mesh);
+
+    tinygltf::Node node;
+    node.mesh = 0;
+    model.nodes.push_back(node);
+    tinygltf::Scene scene;
+    scene.nodes.push_back(0);
+    model.scenes.push_back(scene);
+    model.defaultScene = 0;
+
+    tinygltf::TinyGLTF writer;
+    std::ostringstream out(std::ios::binary);
+    // To a stream: .gltf gets the buffer as a base64 data URI, .glb a BIN chunk.
+    if (!writer.WriteGltfSceneToStream(&model, out, /*prettyPrint=*/false, /*writeBinary=*/ext == ".glb"))
+        throw OutputError(path + ": glTF serialisation failed");
+    write_text_atomic(path, out.str());
+}
+
+GltfStrip read_gltf_strip(const std::string& path) {
+    tinygltf::Model model;
+    tinygltf::TinyGLTF loader;
+    std::string err, warn;
+    const std::string ext = lower_extension(path);
+    bool ok = false;
+    if (ext == ".glb")
+        ok = loader.LoadBinaryFromFile(&model, &err, &warn, path);
+    else if (ext == ".gltf")
+        ok = loader.LoadASCIIFromFile(&model, &err, &warn, path);
+    else
+        throw InputError(path + ": not a .glb or .gltf file");
+    if (!ok) throw InputError(path + ": cannot read glTF: " + err);
+    if (model.meshes.empty() || model.meshes[0].primitives.empty()) throw InputError(path + ": no mesh primitive");
+    const tinygltf::Primitive& prim = model.meshes[0].primitives[0];
+
+    // Returns the bytes of accessor `i` (tightly packed) and its element count.
+    auto accessor_bytes = [&](int i, int want_type, size_t elem_size) -> std::pair<const unsigned char*, size_t> {
+        if (i < 0 || static_cast<size_t>(i) >= model.accessors.size()) throw InputError(path + ": accessor missing");
+        const tinygltf::Accessor& acc = model.accessors[static_cast<size_t>(i)];
+        if (acc.type != want_type) throw InputError(path + ": accessor " + std::to_string(i) + " has an unexpected type");
+        if (acc.bufferView < 0 || static_cast<size_t>(acc.bufferView) >= model.bufferViews.size())
+            throw InputError(path + ": accessor " + std::to_string(i) + " has no buffer view");
+        const tinygltf::BufferView& view = model.bufferViews[static_cast<size_t>(acc.bufferView)];
+        if (view.byteStride != 0 && view.byteStride != elem_size) throw InputError(path + ": interleaved attributes are not supported");
+        const tinygltf::Buffer& b = model.buffers.at(static_cast<size_t>(view.buffer));
+        const size_t start = view.byteOffset + acc.byteOffset;
+        if (start + acc.count * elem_size > b.data.size() || acc.count * elem_size > view.byteLength)
+            throw InputError(path + ": accessor " + std::to_string(i) + " runs past its buffer");
+        return {b.data.data() + start, acc.count};
+    };
+    auto read_vec3 = [&](int i) {
+        if (model.accessors.at(static_cast<size_t>(i)).componentType != TINYGLTF_COMPONENT_TYPE_FLOAT)
+            throw InputError(path + ": attribute is not float");
+        auto [p, n] = accessor_bytes(i, TINYGLTF_TYPE_VEC3, 12);
+        std::vector<Point3> pts(n);
+        for (size_t k = 0; k < n; ++k)
+            for (int d = 0; d < 3; ++d) {
+                float f;
+                std::memcpy(&f, p + 12 * k + 4 * static_cast<size_t>(d), 4);
+                pts[k][d] = f;
+            }
+        return pts;
+    };
+
+    GltfStrip s;
+    s.mode = prim.mode;
+    const auto pos_it = prim.attributes.find("POSITION");
+    if (pos_it == prim.attributes.end()) throw InputError(path + ": primitive has no POSITION");
+    s.positions = read_vec3(pos_it->second);
+    const auto nrm_it = prim.attributes.find("NORMAL");
+    if (nrm_it != prim.attributes.end()) s.normals = read_vec3(nrm_it->second);
+    if (prim.indices < 0) throw InputError(path + ": primitive has no indices");
+    const int ct = model.accessors.at(static_cast<size_t>(prim.indices)).componentType;
+    s.index_component_type = ct;
+    const size_t size = ct == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ? 1 : ct == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ? 2
+                        : ct == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT                                         ? 4
+                                                                                                             : 0;
+    if (size == 0) throw InputError(path + ": indices have an unsupported component type");
+    auto [p, n] = accessor_bytes(prim.indices, TINYGLTF_TYPE_SCALAR, size);
+    s.indices.resize(n);
+    for (size_t k = 0; k < n; ++k) {
+        uint32_t v = 0;
+        if (size == 1) {
+            v = p[k];
+        } else if (size == 2) {
+            uint16_t h;
+            std::memcpy(&h, p + 2 * k, 2);
+            v = h;
+        } else {
+            std::memcpy(&v, p + 4 * k, 4);
+        }
+        s.indices[k] = v;
+    }
+    return s;
+}
+
+}  // namespace singlestrip

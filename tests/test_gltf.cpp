@@ -1,0 +1,265 @@
+// glTF export: every file is checked by the Khronos glTF-Validator (npm `gltf-validator`, run
+// with node) — zero errors required — and read back (tinygltf) and decoded with our own strip
+// decoder: the decoded triangles must be exactly the output faces, in order, with their winding.
+//
+// The validator is looked up in $SINGLESTRIP_GLTF_VALIDATOR_DIR (a directory with
+// node_modules/gltf-validator), else "gltf-validator/" next to this test executable, where it is
+// installed with `npm install --prefix DIR gltf-validator` on first use. Without node/npm or the
+// package the validator test SKIPs with the reason; the decode tests always run.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "singlestrip/encode.hpp"
+#include "singlestrip/errors.hpp"
+#include "singlestrip/generators.hpp"
+#include "singlestrip/gltf.hpp"
+#include "singlestrip/io.hpp"
+#include "singlestrip/mesh.hpp"
+#include "singlestrip/strip.hpp"
+#include "singlestrip/validate.hpp"
+
+using namespace singlestrip;
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path exe_dir() {
+    std::error_code ec;
+    const fs::path p = fs::read_symlink("/proc/self/exe", ec);
+    return ec ? fs::current_path() : p.parent_path();
+}
+
+fs::path scratch_dir() {
+    const fs::path d = exe_dir() / "gltf-test-out";
+    fs::create_directories(d);
+    return d;
+}
+
+StripArrays strip_of(const TriangleSoup& soup) {
+    const TriangleSoup s = prepare_soup(soup, {}, "test");
+    return strip_arrays(build_strip(Mesh::from_soup(s)));
+}
+
+std::string run_capture(const std::string& cmd, int& status) {
+    std::string out;
+    FILE* p = popen(cmd.c_str(), "r");
+    if (!p) {
+        status = -1;
+        return out;
+    }
+    char buf[4096];
+    size_t n;
+    while ((n = fread(buf, 1, sizeof buf, p)) > 0) out.append(buf, n);
+    status = pclose(p);
+    return out;
+}
+
+/// Directory holding node_modules/gltf-validator, installing it when needed; "" + reason if not.
+std::string validator_dir(std::string& why) {
+    static std::string dir, reason;
+    static bool tried = false;
+    if (tried) {
+        why = reason;
+        return dir;
+    }
+    tried = true;
+    int st = 0;
+    run_capture("node --version 2>&1", st);
+    if (st != 0) {
+        reason = "node is not installed";
+        why = reason;
+        return {};
+    }
+    fs::path d = std::getenv("SINGLESTRIP_GLTF_VALIDATOR_DIR") ? fs::path(std::getenv("SINGLESTRIP_GLTF_VALIDATOR_DIR"))
+                                                                : exe_dir() / "gltf-validator";
+    if (!fs::exists(d / "node_modules" / "gltf-validator" / "package.json")) {
+        fs::create_directories(d);
+        const std::string log = run_capture("npm install --prefix '" + d.string() +
+                                                "' --no-audit --no-fund --loglevel=error gltf-validator 2>&1",
+                                            st);
+        if (st != 0 || !fs::exists(d / "node_modules" / "gltf-validator" / "package.json")) {
+            reason = "cannot install the npm package gltf-validator into " + d.string() + ": " + log.substr(0, 400);
+            why = reason;
+            return {};
+        }
+    }
+    dir = d.string();
+    return dir;
+}
+
+/// Runs the Khronos validator on `file`; returns its JSON report.
+nlohmann::json validate_gltf(const std::string& dir, const std::string& file) {
+    const fs::path script = fs::path(dir) / "validate.js";
+    {
+        std::ofstream js(script);
+        js << "const v = require('gltf-validator');\n"
+              "const fs = require('fs');\n"
+              "const path = process.argv[2];\n"
+              "v.validateBytes(new Uint8Array(fs.readFileSync(path)), {uri: path, maxIssues: 0})\n"
+              "  .then(r => { process.stdout.write(JSON.stringify(r)); })\n"
+              "  .catch(e => { process.stdout.write(JSON.stringify({exception: String(e)})); process.exit(1); });\n";
+    }
+    int st = 0;
+    const std::string out = run_capture("cd '" + dir + "' && node validate.js '" + file + "' 2>&1", st);
+    EXPECT_EQ(st, 0) << out;
+    return nlohmann::json::parse(out, nullptr, /*allow_exceptions=*/false);
+}
+
+/// Each triangle rotated so its smallest index comes first (same cyclic order = same winding).
+std::vector<Triangle> canonical(std::vector<Triangle> t) {
+    for (Triangle& f : t) {
+        while (f[0] > f[1] || f[0] > f[2]) f = Triangle{f[1], f[2], f[0]};
+    }
+    return t;
+}
+
+void expect_roundtrip(const std::string& file, const StripArrays& a, const std::vector<uint32_t>& idx) {
+    const GltfStrip g = read_gltf_strip(file);
+    EXPECT_EQ(g.mode, 5) << "primitive mode must be TRIANGLE_STRIP";
+    EXPECT_EQ(g.indices, idx);
+    // Our own decoder on the file's indices gives back exactly the output faces, in order.
+    EXPECT_EQ(canonical(decode_triangle_strip(g.indices)), canonical(a.faces));
+    uint32_t max_index = 0;
+    for (uint32_t i : g.indices) max_index = std::max(max_index, i);
+    EXPECT_EQ(g.index_component_type, max_index < 65535 ? 5123 : 5125);
+    ASSERT_EQ(g.positions.size(), a.points.size());
+    for (size_t v = 0; v < a.points.size(); ++v)
+        for (int d = 0; d < 3; ++d) ASSERT_EQ(g.positions[v][d], static_cast<double>(static_cast<float>(a.points[v][d])));
+    ASSERT_EQ(g.normals.size(), a.points.size());
+    // Normals are unit (the validator requires it; direction is checked on a sphere below).
+    for (const Point3& n : g.normals) EXPECT_NEAR(std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]), 1.0, 1e-5);
+}
+
+struct Case {
+    std::string name;
+    TriangleSoup soup;
+};
+
+std::vector<Case> cases() {
+    return {
+        {"tetra", read_mesh_file(std::string(SINGLESTRIP_SOURCE_DIR) + "/tests/data/tetra.off")},
+        {"icosphere", make_icosphere(2)},
+        {"torus", make_torus(24, 12)},
+        {"genus2_with_holes", make_genus_with_holes(2, 2, 6)},
+        {"builtin", make_builtin_model()},
+        // > 65535 vertices: 32-bit indices.
+        {"big_grid", make_grid_disk(260, 260)},
+    };
+}
+
+}  // namespace
+
+TEST(Gltf, RoundTripDecodesToOutputFaces) {
+    for (const Case& c : cases()) {
+        SCOPED_TRACE(c.name);
+        const StripArrays a = strip_of(c.soup);
+        const std::vector<uint32_t> idx = encode_triangle_strip(a.faces);
+        for (const char* ext : {".glb", ".gltf"}) {
+            const std::string file = (scratch_dir() / (c.name + ext)).string();
+            write_gltf_strip(file, a, idx);
+            expect_roundtrip(file, a, idx);
+            // Atomic write: no temporary left next to the file.
+            for (const auto& e : fs::directory_iterator(scratch_dir()))
+                EXPECT_EQ(e.path().filename().string().find(".tmp-"), std::string::npos) << e.path();
+        }
+    }
+}
+
+TEST(Gltf, BigMeshUsesUint32AndSmallUint16) {
+    const StripArrays big = strip_of(make_grid_disk(260, 260));
+    ASSERT_GT(big.points.size(), 65535u);
+    const std::string f1 = (scratch_dir() / "big.glb").string();
+    write_gltf_strip(f1, big, encode_triangle_strip(big.faces));
+    EXPECT_EQ(read_gltf_strip(f1).index_component_type, 5125);
+    const StripArrays small = strip_of(make_icosphere(1));
+    const std::string f2 = (scratch_dir() / "small.glb").string();
+    write_gltf_strip(f2, small, encode_triangle_strip(small.faces));
+    EXPECT_EQ(read_gltf_strip(f2).index_component_type, 5123);
+}
+
+TEST(Gltf, NormalsPointOutwardOnConvexMesh) {
+    const StripArrays a = strip_of(make_icosphere(2));
+    const std::vector<Point3> n = vertex_normals(a.points, a.faces);
+    // Icosphere is centred at the origin: outward normal ~ position direction.
+    for (size_t v = 0; v < a.points.size(); ++v) {
+        const Point3& p = a.points[v];
+        const double len = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+        const double dot = (p[0] * n[v][0] + p[1] * n[v][1] + p[2] * n[v][2]) / len;
+        EXPECT_GT(dot, 0.95) << "vertex " << v;
+    }
+}
+
+TEST(Gltf, Errors) {
+    const StripArrays a = strip_of(make_icosphere(0));
+    const std::vector<uint32_t> idx = encode_triangle_strip(a.faces);
+    EXPECT_THROW(write_gltf_strip((scratch_dir() / "x.obj").string(), a, idx), RequestError);
+    EXPECT_THROW(write_gltf_strip((scratch_dir() / "x.glb").string(), a, {}), RequestError);
+    std::vector<uint32_t> bad = idx;
+    bad[0] = static_cast<uint32_t>(a.points.size());
+    EXPECT_THROW(write_gltf_strip((scratch_dir() / "x.glb").string(), a, bad), RequestError);
+    EXPECT_THROW(write_gltf_strip((scratch_dir() / "no-such-dir" / "x.glb").string(), a, idx), OutputError);
+    EXPECT_FALSE(fs::exists(scratch_dir() / "x.glb"));
+    EXPECT_THROW(read_gltf_strip(std::string(SINGLESTRIP_SOURCE_DIR) + "/tests/data/tetra.off"), InputError);
+    EXPECT_TRUE(is_gltf_path("a/B.GLB"));
+    EXPECT_TRUE(is_gltf_path("x.gltf"));
+    EXPECT_FALSE(is_gltf_path("x.glb.ply"));
+}
+
+TEST(Gltf, KhronosValidatorReportsNoErrors) {
+    std::string why;
+    const std::string dir = validator_dir(why);
+    if (dir.empty()) GTEST_SKIP() << "Khronos glTF-Validator unavailable: " << why;
+    for (const Case& c : cases()) {
+        SCOPED_TRACE(c.name);
+        const StripArrays a = strip_of(c.soup);
+        const std::vector<uint32_t> idx = encode_triangle_strip(a.faces);
+        for (const char* ext : {".glb", ".gltf"}) {
+            const std::string file = fs::absolute(scratch_dir() / (c.name + "_v" + ext)).string();
+            write_gltf_strip(file, a, idx);
+            const nlohmann::json r = validate_gltf(dir, file);
+            ASSERT_TRUE(r.is_object() && r.contains("issues")) << r.dump();
+            const auto& issues = r["issues"];
+            EXPECT_EQ(issues["numErrors"].get<int>(), 0) << file << ": " << issues.dump(1);
+            // The validator saw what we wrote: one TRIANGLE_STRIP primitive.
+            const auto& info = r["info"];
+            EXPECT_EQ(info["drawCallCount"].get<int>(), 1) << info.dump();
+            EXPECT_EQ(info["totalVertexCount"].get<size_t>(), a.points.size()) << info.dump();
+            if (issues["numWarnings"].get<int>() != 0) std::cerr << file << ": warnings: " << issues["messages"].dump() << '\n';
+        }
+    }
+}
+
+TEST(Gltf, KhronosValidatorCatchesACorruptedFile) {
+    // Guards against a validator run that silently checks nothing: a wrong POSITION max and a
+    // wrong mode must be reported as errors.
+    std::string why;
+    const std::string dir = validator_dir(why);
+    if (dir.empty()) GTEST_SKIP() << "Khronos glTF-Validator unavailable: " << why;
+    const StripArrays a = strip_of(make_icosphere(1));
+    const std::string file = fs::absolute(scratch_dir() / "corrupt.gltf").string();
+    write_gltf_strip(file, a, encode_triangle_strip(a.faces));
+    nlohmann::json doc;
+    {
+        std::ifstream in(file);
+        in >> doc;
+    }
+    doc["accessors"][0]["max"][0] = doc["accessors"][0]["max"][0].get<double>() + 1.0;
+    doc["meshes"][0]["primitives"][0]["mode"] = 9;  // not a glTF primitive mode
+    {
+        std::ofstream out(file);
+        out << doc.dump();
+    }
+    const nlohmann::json r = validate_gltf(dir, file);
+    ASSERT_TRUE(r.is_object() && r.contains("issues")) << r.dump();
+    EXPECT_GE(r["issues"]["numErrors"].get<int>(), 2) << r["issues"].dump(1);
+}
