@@ -598,3 +598,112 @@ TEST_F(VerifyFiles, VerifyFilesEndToEnd) {
 }
 
 }  // namespace
+
+// --- real meshes: strips built by the library pass; mutations of them are caught -----------
+
+#include "cgal_data.hpp"
+#include "singlestrip/cycles.hpp"
+#include "singlestrip/io.hpp"
+#include "singlestrip/mesh.hpp"
+#include "singlestrip/strip.hpp"
+#include "singlestrip/tree_cotree.hpp"
+
+namespace {
+
+struct RealCase {
+    const char* file;
+    long long genus;
+    size_t loops;
+};
+
+class VerifyReal : public ::testing::TestWithParam<RealCase> {};
+
+TEST_P(VerifyReal, BuiltStripPassesAndMutationsAreCaught) {
+    const RealCase rc = GetParam();
+    const std::string path = ss::test::cgal_mesh_path(rc.file);
+    if (path.empty()) GTEST_SKIP() << "libcgal-demo data not available";
+    const ss::TriangleSoup soup = ss::read_mesh_file(path);
+    const ss::StripResult res = ss::build_strip(ss::Mesh::from_soup(soup));
+    const ss::StripArrays arr = ss::strip_arrays(res);
+
+    ss::VerifyInput in;
+    in.in_points = soup.points;
+    in.in_faces = soup.triangles;
+    in.out_points = arr.points;
+    in.out_faces = arr.faces;
+    in.out_parent = arr.parent;
+    in.cycles = ss::tree_cotree_cycles(res).cycles;  // a basis built by other code
+    const auto r = ss::verify(in);
+    ASSERT_TRUE(r.ok()) << rc.file << "\n" << joined(r);
+    EXPECT_EQ(r.genus, rc.genus);
+    EXPECT_EQ(r.boundary_loops, rc.loops);
+    const size_t dim = static_cast<size_t>(2 * rc.genus + (rc.loops ? static_cast<long long>(rc.loops) - 1 : 0));
+    EXPECT_EQ(r.cycle_rank, dim);
+
+    // Parents inferred geometrically give the same verdict.
+    {
+        auto v = in;
+        v.out_parent.clear();
+        const auto rv = ss::verify(v);
+        EXPECT_TRUE(rv.ok()) << joined(rv);
+    }
+    const size_t F = in.out_faces.size();
+    const size_t mid = F / 2;
+    {  // two consecutive faces swapped
+        auto v = in;
+        std::swap(v.out_faces[mid], v.out_faces[mid + 1]);
+        std::swap(v.out_parent[mid], v.out_parent[mid + 1]);
+        v.cycles.reset();
+        EXPECT_TRUE(has_failure_prefix(ss::verify(v), "strip")) << rc.file;
+    }
+    {  // a face dropped
+        auto v = in;
+        v.out_faces.erase(v.out_faces.begin() + static_cast<long>(mid));
+        v.out_parent.erase(v.out_parent.begin() + static_cast<long>(mid));
+        v.cycles.reset();
+        const auto rv = ss::verify(v);
+        EXPECT_TRUE(has_failure_prefix(rv, "coverage")) << rc.file << joined(rv);
+        EXPECT_TRUE(has_failure_prefix(rv, "topology")) << rc.file << joined(rv);
+    }
+    if (in.out_points.size() > in.in_points.size()) {  // an inserted midpoint moved along the surface normal
+        auto v = in;
+        v.cycles.reset();
+        Point3& p = v.out_points.back();
+        p[0] += 1e-3;
+        p[1] += 2e-3;
+        p[2] -= 1e-3;
+        EXPECT_TRUE(has_failure_prefix(ss::verify(v), "geometry")) << rc.file;
+    }
+    {  // a face flipped
+        auto v = in;
+        v.cycles.reset();
+        std::swap(v.out_faces[mid][0], v.out_faces[mid][1]);
+        const auto rv = ss::verify(v);
+        EXPECT_TRUE(has_failure(rv, "orientation", "face " + std::to_string(mid))) << rc.file << joined(rv);
+    }
+    if (dim >= 2) {  // one cycle replaced by a copy of another: rank deficit
+        auto v = in;
+        (*v.cycles)[1] = (*v.cycles)[0];
+        const auto rv = ss::verify(v);
+        EXPECT_TRUE(has_failure(rv, "cycles", "not linearly independent")) << rc.file << joined(rv);
+        EXPECT_EQ(rv.cycle_rank, dim - 1);
+    }
+    if (dim >= 1) {  // one cycle missing
+        auto v = in;
+        v.cycles->pop_back();
+        EXPECT_TRUE(has_failure(ss::verify(v), "cycles", "expected 2g+h-1")) << rc.file;
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Real, VerifyReal,
+                         ::testing::Values(RealCase{"head.off", 0, 3}, RealCase{"eight.off", 2, 0},
+                                           RealCase{"elephant-with-holes.off", 3, 106},
+                                           RealCase{"cheese.off", 133, 0}),
+                         [](const auto& param_info) {
+                             std::string n = param_info.param.file;
+                             n = n.substr(0, n.find('.'));
+                             std::replace(n.begin(), n.end(), '-', '_');
+                             return n;
+                         });
+
+}  // namespace
