@@ -657,7 +657,7 @@ void check_cycles(const VerifyInput& in, const Adjacency& out, long long expecte
         for (size_t k = 0; k < W; ++k) any[k] |= r[k];
     for (uint32_t c = 0; c < m; ++c)
         if (!(any[c / 64] >> (c % 64) & 1))
-            fails.add("cycles", "cycle " + std::to_string(c) + " is null-homologous (bounds a region; e.g. a loop around one vertex)");
+            fails.add("cycles", "cycle " + std::to_string(c) + " is null-homologous in H1(M;Z2) (it bounds a region, e.g. a loop around one vertex)");
     const size_t rank = z2_rank(rows, m);
     report.cycle_rank = rank;
     if (rank < m)
