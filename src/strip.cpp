@@ -44,6 +44,12 @@ private:
 
     // ---- regions ----
     std::vector<uint32_t> region_size_;  ///< unstriped faces per region label
+    /// Per region: its first Betti number 2g+b-1 = 1 - chi (chi with vertices counted once per
+    /// fan of the region). Bridges split it between the islands, a fundamental triangle lowers
+    /// it by one; at 0 the region is a disk and a failed cavity test proves a bridge.
+    std::vector<long long> region_beta_;
+    std::vector<uint32_t> vstamp_;  ///< per vertex: marks for chi_of()
+    uint32_t vstamp_base_ = 0;
     struct Deferred {
         uint32_t region;
         uint32_t anchor;  ///< half-edge of a face in the region, facing the striped face it was cut from
@@ -75,6 +81,8 @@ private:
     }
 
     void grow_arrays();
+    long long chi_of(const std::vector<uint32_t>& faces, uint32_t r);
+    void note_fundamental(uint32_t f, uint32_t r);
     uint32_t new_region(uint32_t size);
     void insert_after(uint32_t cursor, uint32_t f);
     void take(uint32_t cursor, uint32_t f);
@@ -119,10 +127,41 @@ void Builder::grow_arrays() {
     stamp_.resize(nf, 0);
     fundamental_.resize(nf, 0);
     blocked_.resize(mesh_.num_halfedges(), 0);
+    vstamp_.resize(mesh_.num_vertices(), 0);
+}
+
+// chi of a set of open faces of region r: F - (passable edges inside) + (vertices whose whole
+// fan lies in the region through passable edges). Derivation in docs/algorithm.md. O(|faces|).
+long long Builder::chi_of(const std::vector<uint32_t>& faces, uint32_t r) {
+    ++vstamp_base_;
+    long long inner_halfedges = 0, interior_vertices = 0;
+    for (const uint32_t f : faces) {
+        for (uint32_t k = 0; k < 3; ++k) {
+            const uint32_t h = 3 * f + k;
+            inner_halfedges += open_neighbor(h, r) != kNone;
+            const uint32_t v = mesh_.from(h);
+            if (vstamp_[v] == vstamp_base_) continue;
+            vstamp_[v] = vstamp_base_;
+            // Interior: rotating around v never leaves the region nor crosses a blocked edge.
+            uint32_t g = h;
+            bool interior = true;
+            do {
+                const uint32_t e = Mesh::prev(g);
+                if (!passable(e) || !in_region(Mesh::face(g), r)) {
+                    interior = false;
+                    break;
+                }
+                g = mesh_.twin(e);
+            } while (g != h);
+            interior_vertices += interior;
+        }
+    }
+    return static_cast<long long>(faces.size()) - inner_halfedges / 2 + interior_vertices;
 }
 
 uint32_t Builder::new_region(uint32_t size) {
     region_size_.push_back(size);
+    region_beta_.push_back(0);
     deferred_of_region_.push_back(kNone);
     return static_cast<uint32_t>(region_size_.size() - 1);
 }
@@ -226,12 +265,21 @@ Builder::Classification Builder::classify(uint32_t n, uint32_t from, uint32_t r)
     if (fan_connects(n, c.ha, c.hb, r)) return c;
     const int s = bidirectional_search(n, c.a, c.b, r);
     if (s < 0) {
-        c.fundamental = true;  // a split candidate that is not a bridge (§3.1)
+        // A split candidate that is not a bridge (§3.1). Impossible in a disk.
+        if (region_beta_[r] <= 0)
+            throw InternalError("strip builder: fundamental triangle in a region without cycles (topology tracking broken)");
+        c.fundamental = true;
         return c;
     }
     c.kind = Kind::Bridge;
     c.small_side = static_cast<uint32_t>(s);
     return c;
+}
+
+void Builder::note_fundamental(uint32_t f, uint32_t r) {
+    fundamental_[f] = 1;
+    ++stats_.fundamental_triangles;
+    --region_beta_[r];
 }
 
 void Builder::defer(uint32_t region, uint32_t anchor) {
@@ -270,14 +318,19 @@ void Builder::grow(uint32_t cursor, uint32_t region, uint32_t dest) {
         }
         if (nc == 0) {
             if (dest_adjacent) {
-                // Only dest is reachable: end here and defer the rest of the region; it touches
-                // dest through dest's third edge (its other edges lead to t and to the strip).
+                // Only dest is reachable: end the region here and defer what is left; it touches
+                // dest (inside a splice dest's out-edge leads back to the strip, so through one
+                // edge; as the strip's last face, possibly through two, then maybe as two islands).
+                const Classification c = classify(dest, t, region);
+                if (c.kind == Kind::Bridge) {
+                    const uint32_t large_he = c.small_side == 0 ? c.hb : c.ha;
+                    const uint32_t large = take_bridge(t, dest, region, kNone, c);
+                    defer(large, mesh_.twin(large_he));
+                    return;
+                }
+                if (c.fundamental) note_fundamental(dest, region);
                 take(t, dest);
-                uint32_t anchor = kNone;
-                for (uint32_t k = 0; k < 3 && anchor == kNone; ++k)
-                    if (open_neighbor(3 * dest + k, region) != kNone) anchor = mesh_.twin(3 * dest + k);
-                if (anchor == kNone) throw InternalError("strip builder: region lost contact with its end face");
-                defer(region, anchor);
+                defer(region, mesh_.twin(c.ha));
                 return;
             }
             throw InternalError("strip builder: strip stuck with " + std::to_string(region_size_[region]) +
@@ -312,10 +365,7 @@ void Builder::grow(uint32_t cursor, uint32_t region, uint32_t dest) {
         }
         if (chosen != kNone) {
             const uint32_t n = cand[idx[chosen]];
-            if (cls[chosen].fundamental) {
-                fundamental_[n] = 1;
-                ++stats_.fundamental_triangles;
-            }
+            if (cls[chosen].fundamental) note_fundamental(n, region);
             last_turn_ = turn[idx[chosen]];
             take(t, n);
             t = n;
@@ -339,16 +389,20 @@ uint32_t Builder::take_bridge(uint32_t cursor, uint32_t n, uint32_t region, uint
     const uint32_t small = c.small_side;
     const uint32_t small_he = small == 0 ? c.ha : c.hb;
     const uint32_t large_he = small == 0 ? c.hb : c.ha;
+    take(cursor, n);  // first, so that n counts in neither island below
     const uint32_t small_size = static_cast<uint32_t>(side_[small].size());
-    const uint32_t large_size = region_size_[region] - 1 - small_size;
-    bool dest_in_small = false;
+    const long long beta_small = 1 - chi_of(side_[small], region);
     const uint32_t r_small = new_region(small_size);
+    region_size_[region] -= small_size;
+    region_beta_[r_small] = beta_small;
+    region_beta_[region] -= beta_small;
+    if (region_beta_[region] < 0 || beta_small < 0)
+        throw InternalError("strip builder: negative cycle count after a bridge (topology tracking broken)");
+    bool dest_in_small = false;
     for (uint32_t f : side_[small]) {
         region_[f] = r_small;
         dest_in_small |= f == dest;
     }
-    region_size_[region] = large_size + 1;  // + n, taken below
-    take(cursor, n);
     if (dest_in_small) {
         defer(region, mesh_.twin(large_he));
         return r_small;
@@ -362,10 +416,7 @@ uint32_t Builder::take_bridge(uint32_t cursor, uint32_t n, uint32_t region, uint
 uint32_t Builder::take_forced(uint32_t cursor, uint32_t f, uint32_t region, uint32_t dest) {
     const Classification c = classify(f, cursor, region);
     if (c.kind == Kind::Bridge) return take_bridge(cursor, f, region, dest, c);
-    if (c.fundamental) {
-        fundamental_[f] = 1;
-        ++stats_.fundamental_triangles;
-    }
+    if (c.fundamental) note_fundamental(f, region);
     take(cursor, f);
     return region;
 }
@@ -723,6 +774,12 @@ StripResult Builder::run() {
                 }
             }
         }
+        // Betti numbers of the pieces (one O(F) pass at the start).
+        std::vector<std::vector<uint32_t>> members(region_size_.size());
+        for (uint32_t f = 0; f < nf; ++f)
+            if (!striped_[f]) members[region_[f]].push_back(f);
+        for (uint32_t r = 0; r < members.size(); ++r)
+            if (!members[r].empty()) region_beta_[r] = 1 - chi_of(members[r], r);
         if (dest != kNone) grow_region = region_[dest];
         std::vector<uint32_t> done_regions{grow_region};
         for (uint32_t i = 0; i < cnt; ++i) {
