@@ -11,8 +11,9 @@
 // Vertex numbering. Users name vertices by their index in the file, so vertices keep the file's
 // order and indices (0-based). Unreferenced vertices are kept (algorithms ignore them).
 // STL has no shared vertices: its corners are WELDED — corners with exactly equal coordinates
-// (bitwise-equal doubles after parsing; no tolerance) are one vertex, and vertices are numbered in
-// order of first appearance in the file.
+// (equal as doubles after parsing, so -0 == +0; no tolerance) are one vertex, and vertices are
+// numbered in order of first appearance in the file. Corners that differ in the last bit stay
+// separate vertices (the mesh then shows a boundary or several components there).
 //
 // Polygons with k > 3 corners (v0..v{k-1}) are fan-triangulated as (v0, vi, vi+1), i = 1..k-2,
 // in file order; TriangleSoup::source_polygon[t] is the file polygon of triangle t. The triangle
@@ -57,9 +58,10 @@ OutputFormat output_format_for(const std::string& path);
 /// in the given (strip) order, each with its winding.
 ///   .ply: binary_little_endian 1.0; `element vertex` with `property double x y z`; `element face`
 ///         with `property list uchar uint vertex_indices` and `property uint parent`.
-///   .obj: "v x y z" lines then "f a b c" (1-based); parents as a comment block is NOT written.
+///   .obj: "v x y z" lines then "f a b c" (1-based); OBJ has no place for `parent`.
 ///   .off: "OFF", counts, vertices, "3 a b c" faces.
-/// Coordinates are written with 17 significant digits (text formats) so they round-trip exactly.
+/// Text formats write the shortest decimal that round-trips (std::to_chars), so coordinates read
+/// back bit-exact.
 /// The file is written to a temporary in the same directory and renamed into place at the end:
 /// a failure never leaves a partial output.
 /// \pre parent.size() == faces.size(), every face index < points.size().
