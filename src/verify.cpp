@@ -760,6 +760,7 @@ VerifyReport verify(const VerifyInput& in) {
 
     // ---- geometry per face, areas per parent
     std::vector<double> child_area(in.in_faces.size(), 0.0);
+    size_t degenerate_parents_checked = 0;
     std::vector<uint32_t> child_count(in.in_faces.size(), 0);
     for (uint32_t f = 0; f < F; ++f) {
         if (!out.face_ok[f] || parent[f] == kNo) continue;
@@ -769,6 +770,21 @@ VerifyReport verify(const VerifyInput& in) {
         const std::string who = "face " + std::to_string(f) + " (parent " + std::to_string(parent[f]) + ")";
         ++child_count[parent[f]];
         const V3 a = in.out_points[t[0]], b = in.out_points[t[1]], c = in.out_points[t[2]];
+        if (!(std::sqrt(P.n2) > 1e-12 * P.size * P.size)) {
+            // A zero-area input face (real meshes have them): no plane to test against. Its
+            // children must be zero-area too and stay within its extent (a segment or a point).
+            ++degenerate_parents_checked;
+            bool within = true;
+            for (const V3& q : {a, b, c})
+                for (int k = 0; k < 3; ++k) {
+                    const double lo = std::min({P.a[k], P.b[k], P.c[k]}), hi = std::max({P.a[k], P.b[k], P.c[k]});
+                    if (!(q[k] >= lo - kRelTol * (P.size + 1e-300) && q[k] <= hi + kRelTol * (P.size + 1e-300))) within = false;
+                }
+            const V3 nd = crs(sub(b, a), sub(c, a));
+            if (!within || !(norm(nd) <= 1e-9 * P.size * P.size))
+                fails.add("geometry", who + ": not within its zero-area parent");
+            continue;
+        }
         bool in_plane = true, inside = true;
         for (const V3& p : {a, b, c}) {
             double dist = 0;
@@ -785,6 +801,9 @@ VerifyReport verify(const VerifyInput& in) {
         else if (!(projected > 0)) fails.add("orientation", who + ": orientation opposite to its parent's (flipped)");
         child_area[parent[f]] += 0.5 * projected;
     }
+    if (degenerate_parents_checked)
+        report.notes.push_back(std::to_string(degenerate_parents_checked) +
+                               " face(s) lie in zero-area input faces: checked to stay within them");
     if (all_faces_ok && std::all_of(parent.begin(), parent.end(), [](uint32_t p) { return p != kNo; })) {
         for (uint32_t p = 0; p < in.in_faces.size(); ++p) {
             const ParentFrame P = frame_of(in.in_points, in.in_faces[p]);
