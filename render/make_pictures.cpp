@@ -1,0 +1,142 @@
+// Regenerates the README pictures (docs/img/render_*.png) through the same path as
+// `singlestrip render`: strip -> result PLY (+ cycles JSON, constraints file) -> run_render_command.
+//
+//   singlestrip_pictures <dir with fandisk.off, head.off, eight.off> <out dir>
+//
+// The intermediate files are kept in <out dir>/render_work/ (handy for the README commands).
+#include <cmath>
+#include <cstdio>
+#include <exception>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <limits>
+#include <queue>
+#include <string>
+#include <vector>
+
+#include "render/render.hpp"
+#include "singlestrip/cycles.hpp"
+#include "singlestrip/encode.hpp"
+#include "singlestrip/errors.hpp"
+#include "singlestrip/io.hpp"
+#include "singlestrip/mesh.hpp"
+#include "singlestrip/strip.hpp"
+#include "singlestrip/validate.hpp"
+
+namespace fs = std::filesystem;
+using namespace singlestrip;
+
+namespace {
+
+struct Picture {
+    std::string mesh, name;
+    render::View view;
+    bool cycles = false;
+    bool constrained = false;
+};
+
+/// Shortest vertex path (edge lengths) from a to b: the constraint polyline of the example.
+std::vector<uint32_t> shortest_path(const TriangleSoup& s, uint32_t a, uint32_t b) {
+    std::vector<std::vector<uint32_t>> adj(s.points.size());
+    for (const Triangle& t : s.triangles)
+        for (int k = 0; k < 3; ++k) adj[t[k]].push_back(t[(k + 1) % 3]), adj[t[(k + 1) % 3]].push_back(t[k]);
+    std::vector<double> dist(s.points.size(), std::numeric_limits<double>::infinity());
+    std::vector<uint32_t> prev(s.points.size(), kNone);
+    using Item = std::pair<double, uint32_t>;
+    std::priority_queue<Item, std::vector<Item>, std::greater<>> q;
+    dist[a] = 0;
+    q.push({0, a});
+    while (!q.empty()) {
+        auto [d, u] = q.top();
+        q.pop();
+        if (d > dist[u]) continue;
+        for (uint32_t v : adj[u]) {
+            double e = 0;
+            for (int k = 0; k < 3; ++k) e += (s.points[u][k] - s.points[v][k]) * (s.points[u][k] - s.points[v][k]);
+            const double nd = d + std::sqrt(e);
+            if (nd < dist[v]) dist[v] = nd, prev[v] = u, q.push({nd, v});
+        }
+    }
+    std::vector<uint32_t> path;
+    for (uint32_t v = b; v != kNone; v = prev[v]) path.insert(path.begin(), v);
+    return path;
+}
+
+/// Vertex with the largest (sign * coordinate `axis`).
+uint32_t extreme(const TriangleSoup& s, int axis, double sign) {
+    uint32_t best = 0;
+    for (uint32_t v = 0; v < s.points.size(); ++v)
+        if (sign * s.points[v][axis] > sign * s.points[best][axis]) best = v;
+    return best;
+}
+
+void make(const Picture& p, const fs::path& meshes, const fs::path& out) {
+    const fs::path work = out / "render_work";
+    fs::create_directories(work);
+    const std::string in = (meshes / p.mesh).string();
+    TriangleSoup soup = prepare_soup(read_mesh_file(in), {}, in);
+    StripOptions opt;
+    render::RenderArgs args;
+    if (p.constrained) {
+        // A constraint polyline across the model and source/target at its two far ends.
+        const uint32_t a = extreme(soup, 0, -1), b = extreme(soup, 0, 1);
+        const uint32_t mid_lo = extreme(soup, 1, -1), mid_hi = extreme(soup, 1, 1);
+        const std::vector<uint32_t> path = shortest_path(soup, mid_lo, mid_hi);
+        const fs::path cfile = work / (p.name + ".constraints.txt");
+        std::ofstream c(cfile);
+        for (size_t i = 0; i < path.size(); ++i) c << path[i] << (i + 1 < path.size() ? ' ' : '\n');
+        c.close();
+        opt.constraint_edges = read_constraints(cfile.string(), static_cast<uint32_t>(soup.points.size()));
+        opt.source = a;
+        opt.target = b;
+        args.constraints = cfile.string();
+        args.source = a;
+        args.target = b;
+        std::printf("%s: constraints %s, --source %u --target %u\n", p.name.c_str(), cfile.c_str(), a, b);
+    }
+    const StripResult r = build_strip(Mesh::from_soup(soup), opt);
+    const StripArrays arr = strip_arrays(r);
+    const fs::path ply = work / (p.name + ".ply");
+    write_strip_mesh(ply.string(), arr.points, arr.faces, arr.parent);
+    if (p.cycles) {
+        const Cycles cyc = compute_fundamental_cycles(r);
+        const fs::path cj = work / (p.name + ".cycles.json");
+        write_cycles_json(cj.string(), cyc);
+        args.cycles = cj.string();
+        std::printf("%s: %zu cycles\n", p.name.c_str(), cyc.cycles.size());
+    }
+    args.input = ply.string();
+    args.output = (out / ("render_" + p.name + ".png")).string();
+    args.view = p.view;
+    args.style.width = 900;
+    args.style.height = 700;
+    render::run_render_command(args);
+    std::printf("%s: %u -> %u triangles, %u splits -> %s\n", p.name.c_str(), r.stats.input_triangles, r.stats.output_triangles,
+                r.stats.splits, args.output.c_str());
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (argc != 3) {
+        std::fprintf(stderr, "usage: %s <dir with fandisk.off head.off eight.off> <out dir>\n", argv[0]);
+        return 2;
+    }
+    const std::vector<Picture> pictures = {
+        {"fandisk.off", "fandisk", {40, 30, false}, false, false},
+        {"head.off", "head", {200, 10, false}, true, false},
+        {"eight.off", "eight", {90, 60, false}, true, false},
+        {"elephant.off", "constrained", {270, 15, true}, false, true},
+    };
+    int rc = 0;
+    for (const Picture& p : pictures) {
+        try {
+            make(p, argv[1], argv[2]);
+        } catch (const std::exception& e) {
+            std::fprintf(stderr, "%s: %s\n", p.name.c_str(), e.what());
+            rc = 1;
+        }
+    }
+    return rc;
+}

@@ -1,0 +1,105 @@
+// singlestrip — offscreen pictures of a strip with real OpenGL (Mesa OSMesa, legacy GL 1.x).
+//
+// The strip is drawn as ONE GL_TRIANGLE_STRIP whose vertex sequence is exactly our index
+// buffer (encode_triangle_strip of the faces in strip order), flat shaded (the provoking vertex
+// of strip triangle i is index i+2), so each face gets the colour of its position along the
+// strip and a headlight Lambert term from its own geometric normal. Overlays: fundamental
+// cycles as closed polylines (centroids and shared-edge midpoints, cycles.hpp), constraint edges
+// as lines, source (green) and target (red) as points; hidden overlay parts are drawn faintly.
+// PNG files are written with libpng, atomically (temporary + rename).
+//
+// Built only when OSMesa and libpng are found (render/CMakeLists.txt); then the targets that
+// link singlestrip_render get SINGLESTRIP_HAVE_RENDER=1.
+//
+// Thread safety: every call creates and destroys its own OSMesa context; calls may run on
+// different threads (Mesa's software rasterizer is re-entrant per context).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "singlestrip/soup.hpp"
+
+namespace singlestrip::render {
+
+/// An 8-bit RGBA picture, rows from TOP to bottom.
+struct Image {
+    int width = 0;
+    int height = 0;
+    std::vector<uint8_t> rgba;  ///< width * height * 4
+};
+
+/// Perspective camera (30-degree field of view) looking at the bounding-box centre of the
+/// points, far enough away that the bounding sphere fits. The eye direction (from the centre)
+/// is, for y-up, (cos el cos az, sin el, cos el sin az); for z-up, (cos el cos az,
+/// cos el sin az, sin el).
+struct View {
+    double azimuth_deg = 35.0;
+    double elevation_deg = 25.0;
+    bool z_up = false;  ///< false: +y is up (most mesh files); true: +z is up
+};
+
+struct Style {
+    int width = 1000;
+    int height = 800;
+    std::array<float, 3> background{1.0f, 1.0f, 1.0f};
+    float line_width = 3.0f;
+    float point_size = 14.0f;
+    bool light = true;  ///< headlight Lambert shading; off = flat strip colours
+};
+
+/// What to draw on top of the strip.
+struct Overlays {
+    std::vector<std::vector<Point3>> closed_polylines;   ///< cycles (each closed implicitly)
+    std::vector<std::pair<Point3, Point3>> segments;     ///< constraint edges
+    std::optional<Point3> source;
+    std::optional<Point3> target;
+};
+
+/// Renders the strip. `strip_indices` is a GL_TRIANGLE_STRIP index sequence into `points`.
+/// \throw RequestError if an index is out of range or the sizes are not positive;
+///        Error (InternalError) if no OSMesa context can be created.
+Image render_strip(const std::vector<Point3>& points, const std::vector<uint32_t>& strip_indices,
+                   const Overlays& overlays, const View& view = {}, const Style& style = {});
+
+/// Primitive type for render_coverage().
+enum class Primitive { Triangles, TriangleStrip };
+
+/// Coverage test picture: `indices` drawn with glDrawElements(GL_TRIANGLES or
+/// GL_TRIANGLE_STRIP, ...) from a vertex array of `points`, flat colour, GL_CULL_FACE on (back
+/// faces = clockwise on screen are discarded), no depth test, additive blending so each pixel
+/// holds the number of front-facing layers covering it (saturating at 255). The camera is
+/// computed from `frame_points` (so two meshes with the same bounding box get the same camera).
+/// Returns width*height counts, rows top to bottom.
+std::vector<uint8_t> render_coverage(const std::vector<Point3>& points, const std::vector<uint32_t>& indices,
+                                     Primitive primitive, const std::vector<Point3>& frame_points,
+                                     const View& view, int width, int height);
+
+/// Writes `img` as an 8-bit RGBA PNG, atomically. \throw OutputError.
+void write_png(const std::string& path, const Image& img);
+
+/// Reads an 8-bit RGB/RGBA PNG (tests). \throw InputError.
+Image read_png(const std::string& path);
+
+/// Arguments of `singlestrip render`.
+struct RenderArgs {
+    std::string input;                        ///< RESULT.ply (or .obj/.off) written by `strip`
+    std::string output;                       ///< picture.png
+    std::optional<std::string> cycles;        ///< cycles JSON ({"cycles": [[face, ...], ...]})
+    std::optional<std::string> constraints;   ///< constraint polylines file
+    std::optional<uint32_t> source, target;   ///< vertex ids to mark
+    View view;
+    Style style;
+};
+
+/// `singlestrip render`: reads the result (read_output_mesh), re-encodes its faces with
+/// encode_triangle_strip, renders, writes the PNG. Returns kExitOk.
+/// \throw InputError (unreadable files), RequestError (vertex out of range, output not .png),
+///        OutputError, InternalError — for the CLI's usual mapping to exit codes.
+int run_render_command(const RenderArgs& args);
+
+}  // namespace singlestrip::render
