@@ -116,6 +116,7 @@ private:
     }
     uint32_t source_ = kNone, target_ = kNone;
     void check_split_budget() const;
+    SplitResult split_at(uint32_t h);
 };
 
 void Builder::grow_arrays() {
@@ -288,10 +289,27 @@ void Builder::defer(uint32_t region, uint32_t anchor) {
     ++stats_.deferred_regions;
 }
 
+// Splits the edge of h at its midpoint, keeping the per-face and per-half-edge state in step.
+SplitResult Builder::split_at(uint32_t h) {
+    // Constraint flags of the two half-edges that split_edge moves into new faces.
+    const uint32_t moved_f = Mesh::next(h), moved_g = Mesh::next(mesh_.twin(h));
+    const uint8_t blocked_f = blocked_[moved_f], blocked_g = blocked_[moved_g];
+    const SplitResult s = mesh_.split_edge(h);
+    ++stats_.splits;
+    check_split_budget();
+    grow_arrays();
+    blocked_[moved_f] = 0;
+    blocked_[moved_g] = 0;
+    blocked_[3 * s.f_b + 1] = blocked_f;
+    blocked_[3 * s.g_a + 1] = blocked_g;
+    if (opt_.validate_each_split) mesh_.validate();
+    return s;
+}
+
 void Builder::check_split_budget() const {
-    // docs/algorithm.md: every split is followed by two takes from the region it enlarged, so
-    // splits <= input faces. Exceeding it means a broken invariant, never a long loop.
-    if (stats_.splits > mesh_.num_input_faces())
+    // docs/algorithm.md: splits < input faces (+1 for the target pre-split). Exceeding it means a
+    // broken invariant, never a long loop.
+    if (stats_.splits > mesh_.num_input_faces() + 1)
         throw InternalError("strip builder: split budget exceeded (" + std::to_string(stats_.splits) + " splits)");
 }
 
@@ -443,18 +461,7 @@ void Builder::absorb(uint32_t record) {
         return;
     }
     const uint32_t p = prev_[host], n = next_[host];
-    // Constraint flags of the two half-edges that split_edge moves into new faces.
-    const uint32_t moved_host = Mesh::next(hh), moved_anchor = Mesh::next(ha);
-    const uint8_t blocked_host = blocked_[moved_host], blocked_anchor = blocked_[moved_anchor];
-    const SplitResult s = mesh_.split_edge(hh);
-    ++stats_.splits;
-    check_split_budget();
-    grow_arrays();
-    blocked_[moved_host] = 0;
-    blocked_[moved_anchor] = 0;
-    blocked_[3 * s.f_b + 1] = blocked_host;
-    blocked_[3 * s.g_a + 1] = blocked_anchor;
-    if (opt_.validate_each_split) mesh_.validate();
+    const SplitResult s = split_at(hh);
     striped_[s.f_b] = 1;
     region_[s.f_b] = kNoRegion;
     fundamental_[s.f_b] = fundamental_[host];
@@ -704,15 +711,27 @@ StripResult Builder::run() {
 
     const uint32_t r0 = new_region(nf);
     std::fill(region_.begin(), region_.end(), r0);
-    const uint32_t seed = opt_.seed_face ? *opt_.seed_face
+    uint32_t seed = opt_.seed_face ? *opt_.seed_face
                           : opt_.source  ? face_at_vertex(*opt_.source, kNone)
                                          : choose_seed();
     uint32_t dest = kNone;
     if (opt_.target) {
         dest = face_at_vertex(*opt_.target, seed);
-        if (dest == seed && nf > 1)
-            throw RequestError("cannot end at target vertex " + std::to_string(*opt_.target) +
-                               ": its only face is the first face of the strip");
+        if (dest == seed && nf > 1) {
+            // The target's only face is the first face: split it across the edge opposite the
+            // target so that both children touch the target; start in one, end in the other.
+            uint32_t h = 3 * seed;
+            while (mesh_.from(h) == target_ || mesh_.to(h) == target_) ++h;
+            if (!passable(h))
+                throw RequestError("cannot end at target vertex " + std::to_string(target_) +
+                                   ": its only face is the first face of the strip and cannot be split");
+            const SplitResult sr = split_at(h);
+            const bool a_first = source_ == kNone || has_vertex(sr.f_a, source_);
+            seed = a_first ? sr.f_a : sr.f_b;
+            dest = a_first ? sr.f_b : sr.f_a;
+            for (uint32_t f : {sr.f_b, sr.g_a}) region_[f] = r0;
+            region_size_[r0] += 2;
+        }
         if (nf == 1) dest = kNone;
     }
     take(kNone, seed);
