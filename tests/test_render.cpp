@@ -1,0 +1,213 @@
+// Rendering with a real OpenGL implementation (Mesa OSMesa). The key check: the input drawn as
+// GL_TRIANGLES and our strip drawn as ONE GL_TRIANGLE_STRIP from our index buffer, flat colour,
+// back faces culled, same camera, give identical pictures — so the GL's own strip decoding,
+// winding rule and rasterizer agree that the strip covers exactly the input surface with the
+// input's orientation. Pixels hold the number of front-facing layers (additive blending), which
+// is stronger than a 0/1 mask. Negative checks: a strip whose parity is shifted (all windings
+// flipped) or flipped half-way must give a different picture.
+// SKIPs when render/ was not built (no OSMesa or libpng).
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "cgal_data.hpp"
+#include "singlestrip/cycles.hpp"
+#include "singlestrip/encode.hpp"
+#include "singlestrip/errors.hpp"
+#include "singlestrip/generators.hpp"
+#include "singlestrip/io.hpp"
+#include "singlestrip/mesh.hpp"
+#include "singlestrip/strip.hpp"
+#include "singlestrip/validate.hpp"
+
+#ifdef SINGLESTRIP_HAVE_RENDER
+#include "render/render.hpp"
+#endif
+
+using namespace singlestrip;
+namespace fs = std::filesystem;
+
+#ifndef SINGLESTRIP_HAVE_RENDER
+
+TEST(Render, NotBuilt) { GTEST_SKIP() << "render/ not built (needs libosmesa6-dev and libpng-dev)"; }
+
+#else
+
+namespace {
+
+constexpr int kW = 320, kH = 256;
+
+struct Case {
+    std::string name;
+    TriangleSoup soup;
+    StripOptions options;
+    bool open;  ///< has boundary: a fully flipped strip must change the coverage itself
+};
+
+std::vector<uint32_t> flatten(const std::vector<Triangle>& t) {
+    std::vector<uint32_t> v;
+    v.reserve(3 * t.size());
+    for (const Triangle& f : t) v.insert(v.end(), f.begin(), f.end());
+    return v;
+}
+
+size_t differing(const std::vector<uint8_t>& a, const std::vector<uint8_t>& b) {
+    size_t n = 0;
+    for (size_t i = 0; i < a.size(); ++i) n += a[i] != b[i];
+    return n;
+}
+size_t covered(const std::vector<uint8_t>& a) {
+    size_t n = 0;
+    for (uint8_t x : a) n += x != 0;
+    return n;
+}
+
+std::vector<Case> generated_cases() {
+    std::vector<Case> cs;
+    cs.push_back({"icosphere", make_icosphere(2), {}, false});
+    cs.push_back({"torus", make_torus(30, 14), {}, false});
+    cs.push_back({"genus2_holes", make_genus_with_holes(2, 3, 8), {}, true});
+    cs.push_back({"annulus", make_annulus(24, 4), {}, true});
+    cs.push_back({"builtin", make_builtin_model(), {}, false});
+    return cs;
+}
+
+/// libcgal-demo meshes that are available (none: the caller SKIPs).
+std::vector<Case> real_cases() {
+    std::vector<Case> cs;
+    for (const char* name : {"fandisk.off", "eight.off", "head.off"}) {
+        const std::string p = test::cgal_mesh_path(name);
+        if (p.empty()) continue;
+        TriangleSoup s = read_mesh_file(p);
+        cs.push_back({name, s, {}, mesh_info(s).boundary_edges > 0});
+    }
+    return cs;
+}
+
+const std::vector<render::View> kViews = {{35, 25, false}, {200, -30, false}, {90, 80, false}, {0, 5, true}};
+
+void check_coverage(const std::vector<Case>& cases) {
+    for (const Case& c : cases) {
+        SCOPED_TRACE(c.name);
+        std::cerr << "[ render   ] " << c.name << '\n';
+        const TriangleSoup soup = prepare_soup(c.soup, {}, c.name);
+        const StripArrays a = strip_arrays(build_strip(Mesh::from_soup(soup), c.options));
+        const std::vector<uint32_t> strip = encode_triangle_strip(a.faces);
+        const std::vector<uint32_t> tris = flatten(soup.triangles);
+        ASSERT_GT(a.faces.size(), soup.triangles.size() / 2);
+        for (size_t v = 0; v < kViews.size(); ++v) {
+            SCOPED_TRACE("view " + std::to_string(v));
+            const auto in = render::render_coverage(soup.points, tris, render::Primitive::Triangles, soup.points, kViews[v], kW, kH);
+            const auto out = render::render_coverage(a.points, strip, render::Primitive::TriangleStrip, soup.points, kViews[v], kW, kH);
+            EXPECT_EQ(differing(in, out), 0u) << "pixels whose front-layer count differs";
+
+            // Negative checks. Shifting the parity by one leading repeated index flips every
+            // triangle's winding: front and back swap.
+            std::vector<uint32_t> flipped = strip;
+            flipped.insert(flipped.begin(), strip[0]);
+            const auto fl = render::render_coverage(a.points, flipped, render::Primitive::TriangleStrip, soup.points, kViews[v], kW, kH);
+            // The model is in the picture (an open surface may show only its back from here).
+            ASSERT_GT(covered(in) + covered(fl), static_cast<size_t>(kW * kH / 50));
+            if (c.open) {
+                EXPECT_GT(differing(in, fl), 0u) << "a flipped strip must not look like the input";
+            }
+            // Flipping the second half only (one repeated index in the middle).
+            std::vector<uint32_t> half = strip;
+            half.insert(half.begin() + static_cast<std::ptrdiff_t>(half.size() / 2), half[half.size() / 2]);
+            const auto hf = render::render_coverage(a.points, half, render::Primitive::TriangleStrip, soup.points, kViews[v], kW, kH);
+            EXPECT_GT(differing(in, hf), 0u) << "a strip flipped half-way must not look like the input";
+        }
+    }
+}
+
+}  // namespace
+
+TEST(Render, StripAndInputGiveIdenticalCulledCoverage) { check_coverage(generated_cases()); }
+
+TEST(Render, RealMeshesStripAndInputGiveIdenticalCulledCoverage) {
+    const std::vector<Case> cs = real_cases();
+    if (cs.empty()) GTEST_SKIP() << "libcgal-demo meshes not available";
+    check_coverage(cs);
+}
+
+TEST(Render, ConstrainedStripWithSplitsCoversTheInput) {
+    // Constraints force extra splits; the split faces must still tile the input exactly.
+    const TriangleSoup soup = prepare_soup(make_torus(24, 12), {}, "torus");
+    StripOptions opt;
+    for (uint32_t k = 0; k + 1 < 12; ++k) opt.constraint_edges.emplace_back(k, k + 1);  // part of a minor circle
+    opt.source = 30;
+    opt.target = 200;
+    const StripResult r = build_strip(Mesh::from_soup(soup), opt);
+    const StripArrays a = strip_arrays(r);
+    ASSERT_GT(r.stats.splits, 0u);
+    const std::vector<uint32_t> strip = encode_triangle_strip(a.faces);
+    for (const render::View& v : kViews) {
+        const auto in = render::render_coverage(soup.points, flatten(soup.triangles), render::Primitive::Triangles, soup.points, v, kW, kH);
+        const auto out = render::render_coverage(a.points, strip, render::Primitive::TriangleStrip, soup.points, v, kW, kH);
+        EXPECT_EQ(differing(in, out), 0u);
+    }
+}
+
+TEST(Render, RenderCommandWritesAPictureWithOverlays) {
+    const fs::path dir = fs::path(::testing::TempDir()) / "singlestrip_render_test";
+    fs::create_directories(dir);
+    const TriangleSoup soup = prepare_soup(make_builtin_model(), {}, "builtin");
+    const StripResult r = build_strip(Mesh::from_soup(soup));
+    const StripArrays a = strip_arrays(r);
+    const std::string ply = (dir / "genus2.ply").string();
+    write_strip_mesh(ply, a.points, a.faces, a.parent);
+    const std::string cyc = (dir / "genus2.cycles.json").string();
+    write_cycles_json(cyc, compute_fundamental_cycles(r));
+
+    render::RenderArgs args;
+    args.input = ply;
+    args.output = (dir / "genus2.png").string();
+    args.cycles = cyc;
+    args.source = a.faces.front()[0];
+    args.target = a.faces.back()[0];
+    args.style.width = 200;
+    args.style.height = 150;
+    ASSERT_EQ(render::run_render_command(args), 0);
+    const render::Image img = render::read_png(args.output);
+    ASSERT_EQ(img.width, 200);
+    ASSERT_EQ(img.height, 150);
+    // Not blank: some pixels differ from the white background, and both ends of the colour ramp
+    // (blue start, red end of the strip) appear.
+    size_t non_bg = 0, blueish = 0, reddish = 0;
+    for (size_t i = 0; i < img.rgba.size(); i += 4) {
+        const int R = img.rgba[i], G = img.rgba[i + 1], B = img.rgba[i + 2];
+        non_bg += (R < 250 || G < 250 || B < 250);
+        blueish += B > R + 40 && B > G;
+        reddish += R > G + 40 && R > B + 40;
+    }
+    EXPECT_GT(non_bg, 200u * 150u / 10);
+    EXPECT_GT(blueish, 0u);
+    EXPECT_GT(reddish, 0u);
+
+    // Errors, with the CLI's types.
+    render::RenderArgs bad = args;
+    bad.output = (dir / "x.jpg").string();
+    EXPECT_THROW(render::run_render_command(bad), RequestError);
+    bad = args;
+    bad.source = static_cast<uint32_t>(a.points.size());
+    EXPECT_THROW(render::run_render_command(bad), RequestError);
+    bad = args;
+    bad.input = (dir / "missing.ply").string();
+    EXPECT_THROW(render::run_render_command(bad), InputError);
+    // A face order that is not a strip is bad input, not an internal error.
+    std::vector<Triangle> shuffled = a.faces;
+    std::swap(shuffled[1], shuffled[shuffled.size() / 2]);
+    const std::string notstrip = (dir / "notstrip.ply").string();
+    write_strip_mesh(notstrip, a.points, shuffled, a.parent);
+    bad = args;
+    bad.input = notstrip;
+    bad.cycles.reset();
+    EXPECT_THROW(render::run_render_command(bad), InputError);
+}
+
+#endif
