@@ -1,0 +1,288 @@
+// Python bindings (pybind11 + numpy): `import singlestrip`.
+//
+//   singlestrip.strip(vertices, faces, constraints=None, source=None, target=None, cycles=False,
+//                     seed_face=None, greedy=True, orient=False, name="input") -> dict
+//   singlestrip.verify(vertices, faces, result, constraints=None, source=None, target=None) -> dict
+//   singlestrip.decode_strip(indices) -> (T, 3) uint32 array
+//
+// Input checks are the CLI's (prepare_soup, the same messages, prefixed by `name` where the CLI
+// has the file name); every singlestrip::InputError / RequestError becomes ValueError, an
+// InternalError RuntimeError. The GIL is released while the strip is built.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <cmath>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "singlestrip/cycles.hpp"
+#include "singlestrip/encode.hpp"
+#include "singlestrip/errors.hpp"
+#include "singlestrip/mesh.hpp"
+#include "singlestrip/strip.hpp"
+#include "singlestrip/validate.hpp"
+#include "singlestrip/verify.hpp"
+
+namespace py = pybind11;
+namespace ss = singlestrip;
+
+namespace {
+
+using Pairs = std::vector<std::pair<uint32_t, uint32_t>>;
+
+std::vector<ss::Point3> to_points(const py::handle& obj, const char* what) {
+    py::array_t<double, py::array::c_style | py::array::forcecast> a;
+    try {
+        a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(obj);
+    } catch (const py::error_already_set&) {
+        a = {};
+    }
+    if (!a || a.ndim() != 2 || a.shape(1) != 3)
+        throw py::value_error(std::string(what) + " must be an array of shape (n, 3) of numbers");
+    std::vector<ss::Point3> pts(static_cast<size_t>(a.shape(0)));
+    auto r = a.unchecked<2>();
+    for (py::ssize_t i = 0; i < a.shape(0); ++i)
+        for (py::ssize_t d = 0; d < 3; ++d) {
+            const double x = r(i, d);
+            // Same wording as the file readers (io.hpp) for a NaN or infinite coordinate.
+            if (!std::isfinite(x))
+                throw py::value_error(std::string(what) + ": vertex " + std::to_string(i) + " has a non-finite coordinate");
+            pts[static_cast<size_t>(i)][static_cast<size_t>(d)] = x;
+        }
+    return pts;
+}
+
+std::vector<ss::Triangle> to_faces(const py::handle& obj, size_t num_vertices, const char* what) {
+    py::array_t<int64_t, py::array::c_style | py::array::forcecast> a;
+    try {
+        a = py::array_t<int64_t, py::array::c_style | py::array::forcecast>::ensure(obj);
+    } catch (const py::error_already_set&) {
+        a = {};
+    }
+    if (!a || a.ndim() != 2 || a.shape(1) != 3)
+        throw py::value_error(std::string(what) + " must be an integer array of shape (m, 3)");
+    std::vector<ss::Triangle> f(static_cast<size_t>(a.shape(0)));
+    auto r = a.unchecked<2>();
+    for (py::ssize_t i = 0; i < a.shape(0); ++i)
+        for (py::ssize_t k = 0; k < 3; ++k) {
+            const int64_t v = r(i, k);
+            if (v < 0 || static_cast<uint64_t>(v) >= num_vertices)
+                throw py::value_error(std::string(what) + ": face " + std::to_string(i) + " references vertex " + std::to_string(v) +
+                                      " but there are only " + std::to_string(num_vertices) + " vertices");
+            f[static_cast<size_t>(i)][static_cast<size_t>(k)] = static_cast<uint32_t>(v);
+        }
+    return f;
+}
+
+std::optional<uint32_t> to_vertex(const py::object& o, const char* what) {
+    if (o.is_none()) return std::nullopt;
+    const long long v = o.cast<long long>();
+    if (v < 0 || v > 0xfffffffeLL) throw py::value_error(std::string(what) + " " + std::to_string(v) + " is out of range");
+    return static_cast<uint32_t>(v);
+}
+
+/// Constraints: a sequence of polylines (each a sequence of >= 2 vertex ids, like one line of a
+/// constraint file) or an (E, 2) array of edges.
+Pairs to_constraints(const py::object& o, size_t num_vertices) {
+    Pairs pairs;
+    if (o.is_none()) return pairs;
+    size_t line = 0;
+    for (const py::handle& poly : o) {
+        std::vector<long long> ids;
+        for (const py::handle& x : poly) ids.push_back(x.cast<long long>());
+        if (ids.size() < 2)
+            throw py::value_error("constraints: polyline " + std::to_string(line) + " has fewer than 2 vertices");
+        for (long long v : ids)
+            if (v < 0 || static_cast<unsigned long long>(v) >= num_vertices)
+                throw py::value_error("constraints: polyline " + std::to_string(line) + ": vertex " + std::to_string(v) +
+                                      " is out of range (" + std::to_string(num_vertices) + " vertices)");
+        for (size_t i = 0; i + 1 < ids.size(); ++i)
+            pairs.emplace_back(static_cast<uint32_t>(ids[i]), static_cast<uint32_t>(ids[i + 1]));
+        ++line;
+    }
+    return pairs;
+}
+
+template <class T>
+py::array_t<T> vec_array(const std::vector<T>& v) {
+    py::array_t<T> a(static_cast<py::ssize_t>(v.size()));
+    std::copy(v.begin(), v.end(), a.mutable_data());
+    return a;
+}
+
+template <class T, size_t N, class Src>
+py::array_t<T> rows_array(const std::vector<std::array<Src, N>>& v) {
+    py::array_t<T> a({static_cast<py::ssize_t>(v.size()), static_cast<py::ssize_t>(N)});
+    T* p = a.mutable_data();
+    for (const auto& row : v)
+        for (size_t k = 0; k < N; ++k) *p++ = static_cast<T>(row[k]);
+    return a;
+}
+
+/// Runs `f`, translating singlestrip errors into Python exceptions.
+template <class F>
+auto translate(F&& f) -> decltype(f()) {
+    try {
+        return f();
+    } catch (const ss::InputError& e) {
+        throw py::value_error(e.what());
+    } catch (const ss::RequestError& e) {
+        throw py::value_error(e.what());
+    } catch (const ss::Error& e) {
+        throw std::runtime_error(std::string("singlestrip: ") + e.what());
+    }
+}
+
+py::dict strip(const py::object& vertices, const py::object& faces, const py::object& constraints, const py::object& source,
+               const py::object& target, bool cycles, const py::object& seed_face, bool greedy, bool orient,
+               const std::string& name) {
+    ss::TriangleSoup soup;
+    soup.points = to_points(vertices, name.c_str());
+    soup.triangles = to_faces(faces, soup.points.size(), name.c_str());
+    if (soup.triangles.empty()) throw py::value_error(name + ": the mesh has no faces");
+    ss::StripOptions opt;
+    opt.greedy = greedy;
+    opt.source = to_vertex(source, "source");
+    opt.target = to_vertex(target, "target");
+    opt.seed_face = to_vertex(seed_face, "seed_face");
+    opt.constraint_edges = to_constraints(constraints, soup.points.size());
+
+    ss::StripResult result;
+    ss::StripArrays arrays;
+    std::vector<uint32_t> indices;
+    ss::Cycles cyc;
+    translate([&] {
+        py::gil_scoped_release release;
+        soup = ss::prepare_soup(std::move(soup), ss::PrepareOptions{orient}, name);
+        result = ss::build_strip(ss::Mesh::from_soup(soup), opt);
+        arrays = ss::strip_arrays(result);
+        indices = ss::encode_triangle_strip(arrays.faces);
+        if (cycles) cyc = ss::compute_fundamental_cycles(result);
+        return 0;
+    });
+
+    py::dict out;
+    out["vertices"] = rows_array<double>(arrays.points);
+    out["faces"] = rows_array<uint32_t>(arrays.faces);
+    out["parent"] = vec_array(arrays.parent);
+    out["strip"] = vec_array(indices);
+    if (cycles) {
+        py::list cl;
+        for (const auto& c : cyc.cycles) cl.append(vec_array(c));
+        out["cycles"] = cl;
+        out["cycle_lengths"] = vec_array(cyc.lengths);
+    } else {
+        out["cycles"] = py::none();
+    }
+    // Same keys as the CLI's --report (minus file names and timings).
+    const auto& st = result.stats;
+    const double in_tris = st.input_triangles ? static_cast<double>(st.input_triangles) : 1.0;
+    py::dict rep;
+    rep["input_triangles"] = st.input_triangles;
+    rep["output_triangles"] = st.output_triangles;
+    rep["splits"] = st.splits;
+    rep["swaps"] = st.swaps;
+    rep["strip_indices"] = indices.size();
+    rep["genus"] = st.genus;
+    rep["boundary_loops"] = st.boundary_loops;
+    rep["fundamental_triangles"] = st.fundamental_triangles;
+    rep["deferred_regions"] = st.deferred_regions;
+    rep["indices_per_triangle"] = static_cast<double>(indices.size()) / in_tris;
+    rep["extra_percent"] = 100.0 * (static_cast<double>(st.output_triangles) - static_cast<double>(st.input_triangles)) / in_tris;
+    py::dict opts;
+    opts["greedy"] = greedy;
+    opts["orient"] = orient;
+    opts["constraint_edges"] = opt.constraint_edges.size();
+    if (opt.seed_face) opts["seed_face"] = *opt.seed_face;
+    if (opt.source) opts["source"] = *opt.source;
+    if (opt.target) opts["target"] = *opt.target;
+    rep["options"] = opts;
+    if (cycles) rep["cycles"] = cyc.cycles.size();
+    out["report"] = rep;
+    return out;
+}
+
+py::dict verify(const py::object& vertices, const py::object& faces, const py::dict& result, const py::object& constraints,
+                const py::object& source, const py::object& target) {
+    ss::VerifyInput in;
+    in.in_points = to_points(vertices, "vertices");
+    in.in_faces = to_faces(faces, in.in_points.size(), "faces");
+    if (!result.contains("vertices") || !result.contains("faces"))
+        throw py::value_error("result must be a dict with 'vertices' and 'faces' (as returned by singlestrip.strip)");
+    in.out_points = to_points(result["vertices"], "result['vertices']");
+    in.out_faces = to_faces(result["faces"], in.out_points.size(), "result['faces']");
+    if (result.contains("parent") && !result["parent"].is_none())
+        in.out_parent = py::cast<std::vector<uint32_t>>(py::array_t<uint32_t, py::array::forcecast>::ensure(result["parent"]));
+    if (result.contains("strip") && !result["strip"].is_none())
+        in.indices = py::cast<std::vector<uint32_t>>(py::array_t<uint32_t, py::array::forcecast>::ensure(result["strip"]));
+    if (result.contains("cycles") && !result["cycles"].is_none()) {
+        std::vector<std::vector<uint32_t>> cs;
+        for (const py::handle& c : result["cycles"]) {
+            std::vector<uint32_t> v;
+            for (const py::handle& x : c) v.push_back(x.cast<uint32_t>());
+            cs.push_back(std::move(v));
+        }
+        in.cycles = std::move(cs);
+    }
+    in.constraints = to_constraints(constraints, in.in_points.size());
+    in.source = to_vertex(source, "source");
+    in.target = to_vertex(target, "target");
+    ss::VerifyReport rep;
+    {
+        py::gil_scoped_release release;
+        rep = ss::verify(in);
+    }
+    py::dict d;
+    d["ok"] = rep.ok();
+    d["failures"] = rep.failures;
+    d["notes"] = rep.notes;
+    d["input_faces"] = rep.input_faces;
+    d["output_faces"] = rep.output_faces;
+    d["output_vertices"] = rep.output_vertices;
+    d["euler_characteristic"] = rep.euler_characteristic;
+    d["boundary_loops"] = rep.boundary_loops;
+    d["genus"] = rep.genus;
+    d["cycles_checked"] = rep.cycles_checked;
+    d["cycle_rank"] = rep.cycle_rank;
+    d["text"] = rep.to_string();
+    return d;
+}
+
+}  // namespace
+
+PYBIND11_MODULE(singlestrip, m) {
+    m.doc() = "singlestrip: one triangle strip for an oriented 2-manifold triangle mesh";
+    m.attr("__version__") = "0.1.0";
+    m.def("strip", &strip, py::arg("vertices"), py::arg("faces"), py::arg("constraints") = py::none(),
+          py::arg("source") = py::none(), py::arg("target") = py::none(), py::arg("cycles") = false,
+          py::arg("seed_face") = py::none(), py::arg("greedy") = true, py::arg("orient") = false, py::arg("name") = "input",
+          R"doc(Turn a triangle mesh into ONE triangle strip.
+
+vertices: (n, 3) floats; faces: (m, 3) vertex indices (0-based), consistently oriented
+(orient=True re-orients), edge-connected, manifold.
+constraints: polylines of vertex ids (or an (E, 2) array of edges) the strip must not cross.
+source/target: vertex ids the first/last strip face must touch. seed_face: input face to start.
+cycles: also compute the fundamental cycles (face chains into the output faces).
+name: prefix of error messages (the CLI uses the file name).
+
+Returns a dict: vertices (n', 3) float64 (input vertices first, midpoints after), faces (m', 3)
+uint32 in strip order, parent (m',) uint32 input face of each output face, strip (k,) uint32
+GL_TRIANGLE_STRIP indices, cycles (list of uint32 arrays, or None), report (dict).
+Raises ValueError for invalid input or an impossible request (same messages as the CLI).)doc");
+    m.def("verify", &verify, py::arg("vertices"), py::arg("faces"), py::arg("result"), py::arg("constraints") = py::none(),
+          py::arg("source") = py::none(), py::arg("target") = py::none(),
+          R"doc(Independently check `result` (a dict as returned by strip(): vertices, faces, optional parent,
+strip, cycles) against the input mesh. Returns a dict with ok (bool), failures, notes, counts and
+text (the CLI's `verify` output).)doc");
+    m.def(
+        "decode_strip",
+        [](const py::object& indices) {
+            const auto idx = py::cast<std::vector<uint32_t>>(py::array_t<uint32_t, py::array::forcecast>::ensure(indices));
+            return rows_array<uint32_t>(ss::decode_triangle_strip(idx));
+        },
+        py::arg("indices"), "Decode GL_TRIANGLE_STRIP indices into (t, 3) triangles (degenerate ones skipped).");
+}

@@ -1,0 +1,220 @@
+"""Tests of the Python module `singlestrip` (pybind11 + numpy).
+
+Run: PYTHONPATH=<build>/python /usr/bin/python3 -m pytest tests/python
+Optional environment: SINGLESTRIP_CLI (path of the built CLI, to compare error messages) and
+SINGLESTRIP_SOURCE_DIR (repository root; default: two levels above this file).
+"""
+import math
+import os
+import subprocess
+
+import numpy as np
+import pytest
+
+import singlestrip as ss
+
+SOURCE_DIR = os.environ.get("SINGLESTRIP_SOURCE_DIR",
+                            os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))))
+DATA = os.path.join(SOURCE_DIR, "tests", "data")
+
+
+def read_off(path):
+    """Minimal OFF reader for the test data (triangles and polygons, fan-triangulated)."""
+    tokens = []
+    with open(path) as f:
+        for line in f:
+            line = line.split("#", 1)[0]
+            tokens.extend(line.split())
+    assert tokens[0] == "OFF"
+    nv, nf = int(tokens[1]), int(tokens[2])
+    pos = 4
+    v = np.array([[float(t) for t in tokens[pos + 3 * i: pos + 3 * i + 3]] for i in range(nv)])
+    pos += 3 * nv
+    faces = []
+    for _ in range(nf):
+        k = int(tokens[pos])
+        ids = [int(t) for t in tokens[pos + 1: pos + 1 + k]]
+        pos += 1 + k
+        for i in range(1, k - 1):
+            faces.append([ids[0], ids[i], ids[i + 1]])
+    return v, np.array(faces, dtype=np.int64)
+
+
+def torus(n_major=16, n_minor=8, R=2.0, r=0.7):
+    v = []
+    for i in range(n_major):
+        a = 2 * math.pi * i / n_major
+        for j in range(n_minor):
+            b = 2 * math.pi * j / n_minor
+            v.append([(R + r * math.cos(b)) * math.cos(a), (R + r * math.cos(b)) * math.sin(a), r * math.sin(b)])
+    f = []
+    for i in range(n_major):
+        for j in range(n_minor):
+            a = i * n_minor + j
+            b = ((i + 1) % n_major) * n_minor + j
+            c = ((i + 1) % n_major) * n_minor + (j + 1) % n_minor
+            d = i * n_minor + (j + 1) % n_minor
+            f += [[a, b, c], [a, c, d]]
+    return np.array(v), np.array(f)
+
+
+def grid(n=6):
+    v = np.array([[x, y, 0.0] for y in range(n + 1) for x in range(n + 1)])
+    f = []
+    for y in range(n):
+        for x in range(n):
+            a = y * (n + 1) + x
+            f += [[a, a + 1, a + n + 2], [a, a + n + 2, a + n + 1]]
+    return v, np.array(f)
+
+
+def rotations(t):
+    t = tuple(int(x) for x in t)
+    return min(t, t[1:] + t[:1], t[2:] + t[:2])
+
+
+def check_result(v, f, r):
+    faces, parent, strip = r["faces"], r["parent"], r["strip"]
+    assert r["vertices"].dtype == np.float64 and r["vertices"].shape[1] == 3
+    assert faces.dtype == np.uint32 and faces.shape[1] == 3
+    assert parent.shape == (len(faces),)
+    # Input vertices unchanged, midpoints appended.
+    assert np.array_equal(r["vertices"][: len(v)], np.asarray(v, dtype=np.float64))
+    # One strip: consecutive faces share an edge.
+    for a, b in zip(faces[:-1], faces[1:]):
+        assert len(set(a.tolist()) & set(b.tolist())) == 2
+    # The strip indices decode (independently, here in Python) to the faces in order.
+    decoded = []
+    for i in range(len(strip) - 2):
+        a, b, c = (int(x) for x in strip[i: i + 3])
+        if a == b or b == c or a == c:
+            continue
+        decoded.append((a, b, c) if i % 2 == 0 else (b, a, c))
+    assert [rotations(t) for t in decoded] == [rotations(t) for t in faces]
+    assert [rotations(t) for t in ss.decode_strip(strip)] == [rotations(t) for t in faces]
+    # Every input face has a child; areas add up.
+    assert set(parent.tolist()) == set(range(len(f)))
+    rep = r["report"]
+    assert rep["input_triangles"] == len(f)
+    assert rep["output_triangles"] == len(faces)
+    assert rep["strip_indices"] == len(strip)
+    # The independent verifier agrees.
+    vr = ss.verify(v, f, r)
+    assert vr["ok"], vr["text"]
+
+
+def test_torus_strip_with_cycles():
+    v, f = torus()
+    r = ss.strip(v, f, cycles=True)
+    check_result(v, f, r)
+    assert r["report"]["genus"] == 1
+    assert len(r["cycles"]) == 2  # 2g for a closed surface
+    for c in r["cycles"]:
+        assert c.dtype == np.uint32 and len(c) >= 3
+    vr = ss.verify(v, f, r)
+    assert vr["ok"] and vr["cycles_checked"] == 2 and vr["cycle_rank"] == 2, vr["text"]
+
+
+def test_grid_with_constraints_source_target():
+    v, f = grid(6)
+    # A horizontal polyline through the middle of the grid: vertices (x, 3) for x = 1..5.
+    line = [3 * 7 + x for x in range(1, 6)]
+    r = ss.strip(v, f, constraints=[line], source=0, target=48, seed_face=None)
+    check_result(v, f, r)
+    assert 0 in r["faces"][0].tolist()
+    assert 48 in r["faces"][-1].tolist()
+    assert r["report"]["options"]["constraint_edges"] == 4
+    vr = ss.verify(v, f, r, constraints=[line], source=0, target=48)
+    assert vr["ok"], vr["text"]
+    # Constraints as an (E, 2) array work too.
+    pairs = np.array([[line[i], line[i + 1]] for i in range(4)])
+    r2 = ss.strip(v, f, constraints=pairs, source=0, target=48)
+    assert ss.verify(v, f, r2, constraints=pairs, source=0, target=48)["ok"]
+
+
+def test_verify_detects_a_broken_result():
+    v, f = torus()
+    r = ss.strip(v, f)
+    broken = dict(r)
+    faces = r["faces"].copy()
+    faces[[0, len(faces) // 2]] = faces[[len(faces) // 2, 0]]  # breaks the strip
+    broken["faces"] = faces
+    broken["strip"] = None
+    vr = ss.verify(v, f, broken)
+    assert not vr["ok"] and vr["failures"]
+
+
+def test_input_types_are_converted():
+    v, f = torus(8, 6)
+    r = ss.strip(v.astype(np.float32).tolist(), f.astype(np.int32))
+    assert len(r["faces"]) >= len(f)
+
+
+def test_orient_and_seed_face():
+    v, f = torus(10, 6)
+    f2 = f.copy()
+    f2[3] = f2[3][[0, 2, 1]]  # one flipped face
+    with pytest.raises(ValueError, match="inconsistent orientation"):
+        ss.strip(v, f2)
+    r = ss.strip(v, f2, orient=True)
+    assert r["report"]["options"]["orient"] is True
+    r = ss.strip(v, f, seed_face=7)
+    assert 7 == r["parent"][0]
+
+
+@pytest.mark.parametrize("bad_kwargs, pattern", [
+    ({"source": 10 ** 6}, "source"),
+    ({"seed_face": 10 ** 6}, "seed"),
+    ({"constraints": [[0]]}, "fewer than 2"),
+    ({"constraints": [[0, 10 ** 6]]}, "out of range"),
+])
+def test_bad_requests_raise_value_error(bad_kwargs, pattern):
+    v, f = torus(8, 6)
+    with pytest.raises(ValueError, match=pattern):
+        ss.strip(v, f, **bad_kwargs)
+
+
+def test_constraint_that_is_not_an_edge():
+    v, f = grid(4)
+    with pytest.raises(ValueError):
+        ss.strip(v, f, constraints=[[0, 24]])
+
+
+@pytest.mark.parametrize("vertices, faces, pattern", [
+    (np.zeros((3, 2)), np.array([[0, 1, 2]]), "shape"),
+    (np.zeros((3, 3)), np.array([[0, 1, 5]]), "references vertex 5"),
+    (np.zeros((3, 3)), np.array([[0, 1, -1]]), "references vertex -1"),
+    (np.array([[0, 0, 0], [1, 0, 0], [0, float("nan"), 0]]), np.array([[0, 1, 2]]), "non-finite"),
+    (np.zeros((3, 3)), np.zeros((0, 3), dtype=int), "no faces"),
+    ("not an array", np.array([[0, 1, 2]]), "shape"),
+])
+def test_malformed_arrays(vertices, faces, pattern):
+    with pytest.raises(ValueError, match=pattern):
+        ss.strip(vertices, faces)
+
+
+STRUCTURAL = ["non_manifold_edge.off", "tetra_one_flipped.off", "two_components.off", "repeated_vertex.off",
+              "duplicate_face.off", "moebius.off", "non_manifold_vertex.off"]
+
+
+@pytest.mark.parametrize("name", STRUCTURAL)
+def test_structural_errors_match_the_cli(name, tmp_path):
+    path = os.path.join(DATA, name)
+    v, f = read_off(path)
+    with pytest.raises(ValueError) as exc:
+        ss.strip(v, f, name=path)
+    message = str(exc.value)
+    assert message.startswith(path + ": ")
+    cli = os.environ.get("SINGLESTRIP_CLI")
+    if not cli:
+        pytest.skip("SINGLESTRIP_CLI not set: message not compared with the CLI")
+    p = subprocess.run([cli, "strip", path, "-o", str(tmp_path / "out.ply")], capture_output=True, text=True)
+    assert p.returncode == 3
+    assert p.stderr.strip() == "singlestrip: error: " + message
+
+
+def test_tetra_file_end_to_end():
+    v, f = read_off(os.path.join(DATA, "tetra.off"))
+    r = ss.strip(v, f, cycles=True)
+    check_result(v, f, r)
+    assert r["cycles"] == [] or len(r["cycles"]) == 0
