@@ -1,0 +1,442 @@
+// Fundamental cycles (paper §4) and tree–cotree generators: count 2g+h-1 (2g closed), closed
+// chains, Z2 independence — each set checked by the independent verifier (verify.hpp) AND by a
+// second Z2 rank check written here (intersection parity with relative cycles of H1(M, dM)).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <numeric>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "cgal_data.hpp"
+#include "singlestrip/cycles.hpp"
+#include "singlestrip/errors.hpp"
+#include "singlestrip/generators.hpp"
+#include "singlestrip/io.hpp"
+#include "singlestrip/mesh.hpp"
+#include "singlestrip/strip.hpp"
+#include "singlestrip/tree_cotree.hpp"
+#include "singlestrip/validate.hpp"
+#include "singlestrip/verify.hpp"
+
+using namespace singlestrip;
+
+namespace {
+
+// ---- second opinion: Z2 rank of face-chain cycles in H1(M; Z2), written from face arrays only.
+// A closed face chain crosses a set of interior edges (a Z2 1-cycle of the dual). Its class in
+// H1(M) is detected by intersection parity with relative cycles of H1(M, dM): for every interior
+// edge e = (u, w) not in a spanning tree Tq of the graph in which all boundary vertices are one
+// vertex, the relative cycle path(u) + e + path(w) (tree paths to the root). These span
+// H1(M, dM), and the pairing is perfect (Lefschetz duality), so the rank of the parity matrix is
+// the rank of the cycles in H1(M; Z2). The tree here is depth-first (the verifier's and the
+// library's are breadth-first).
+struct RankCheck {
+    size_t rank = 0;
+    bool chains_ok = true;
+    std::string problem;
+};
+
+RankCheck z2_rank(const std::vector<Point3>& /*points*/, const std::vector<Triangle>& faces,
+                  const std::vector<std::vector<uint32_t>>& cycles) {
+    RankCheck rc;
+    std::map<std::pair<uint32_t, uint32_t>, std::vector<uint32_t>> by_edge;  // undirected edge -> faces
+    uint32_t nv = 0;
+    for (uint32_t f = 0; f < faces.size(); ++f)
+        for (int k = 0; k < 3; ++k) {
+            const uint32_t a = faces[f][k], b = faces[f][(k + 1) % 3];
+            by_edge[{std::min(a, b), std::max(a, b)}].push_back(f);
+            nv = std::max(nv, std::max(a, b) + 1);
+        }
+    std::vector<char> on_boundary(nv, 0);
+    std::vector<std::pair<uint32_t, uint32_t>> edges;  // interior edges
+    std::map<std::pair<uint32_t, uint32_t>, uint32_t> edge_id;
+    for (const auto& [e, fs] : by_edge) {
+        if (fs.size() == 1) on_boundary[e.first] = on_boundary[e.second] = 1;
+        if (fs.size() == 2) {
+            edge_id[{std::min(fs[0], fs[1]), std::max(fs[0], fs[1])}] = static_cast<uint32_t>(edges.size());
+            edges.push_back(e);
+        }
+    }
+    const uint32_t super = nv;
+    auto q = [&](uint32_t v) { return on_boundary[v] ? super : v; };
+    std::vector<std::vector<std::pair<uint32_t, uint32_t>>> adj(nv + 1);  // (neighbour, edge)
+    for (uint32_t e = 0; e < edges.size(); ++e) {
+        const uint32_t a = q(edges[e].first), b = q(edges[e].second);
+        if (a == b) continue;
+        adj[a].push_back({b, e});
+        adj[b].push_back({a, e});
+    }
+    bool any_boundary = std::find(on_boundary.begin(), on_boundary.end(), 1) != on_boundary.end();
+    const uint32_t root = any_boundary ? super : faces[0][0];
+    // Depth-first tree (explicit stack), parent edge per vertex, vertices in discovery order.
+    std::vector<uint32_t> parent_edge(nv + 1, UINT32_MAX), parent(nv + 1, UINT32_MAX), disc;
+    std::vector<char> seen(nv + 1, 0);
+    std::vector<char> in_tree(edges.size(), 0);
+    std::vector<std::pair<uint32_t, size_t>> stack{{root, 0}};
+    seen[root] = 1;
+    disc.push_back(root);
+    while (!stack.empty()) {
+        auto& [v, i] = stack.back();
+        if (i == adj[v].size()) {
+            stack.pop_back();
+            continue;
+        }
+        const auto [w, e] = adj[v][i++];
+        if (seen[w]) continue;
+        seen[w] = 1;
+        in_tree[e] = 1;
+        parent[w] = v;
+        parent_edge[w] = e;
+        disc.push_back(w);
+        stack.push_back({w, 0});
+    }
+    std::vector<uint32_t> non_tree;
+    for (uint32_t e = 0; e < edges.size(); ++e)
+        if (!in_tree[e]) non_tree.push_back(e);
+
+    const size_t m = cycles.size();
+    std::vector<std::vector<uint8_t>> rows(m, std::vector<uint8_t>(non_tree.size(), 0));
+    for (size_t c = 0; c < m; ++c) {
+        std::vector<uint8_t> crossed(edges.size(), 0);
+        const auto& cyc = cycles[c];
+        for (size_t i = 0; i < cyc.size(); ++i) {
+            const uint32_t f = cyc[i], g = cyc[(i + 1) % cyc.size()];
+            auto it = edge_id.find({std::min(f, g), std::max(f, g)});
+            if (f >= faces.size() || g >= faces.size() || it == edge_id.end()) {
+                rc.chains_ok = false;
+                rc.problem = "cycle " + std::to_string(c) + ": faces " + std::to_string(f) + ", " +
+                             std::to_string(g) + " are not adjacent";
+                return rc;
+            }
+            crossed[it->second] ^= 1;
+        }
+        // Parity of crossings along the tree path from each vertex to the root.
+        std::vector<uint8_t> par(nv + 1, 0);
+        for (uint32_t v : disc)
+            if (v != root) par[v] = par[parent[v]] ^ crossed[parent_edge[v]];
+        for (size_t j = 0; j < non_tree.size(); ++j) {
+            const uint32_t e = non_tree[j];
+            rows[c][j] = crossed[e] ^ par[q(edges[e].first)] ^ par[q(edges[e].second)];
+        }
+    }
+    // Gaussian elimination over Z2.
+    size_t rank = 0;
+    for (size_t col = 0; col < non_tree.size() && rank < m; ++col) {
+        size_t piv = rank;
+        while (piv < m && !rows[piv][col]) ++piv;
+        if (piv == m) continue;
+        std::swap(rows[piv], rows[rank]);
+        for (size_t r = 0; r < m; ++r)
+            if (r != rank && rows[r][col])
+                for (size_t k = col; k < non_tree.size(); ++k) rows[r][k] ^= rows[rank][k];
+        ++rank;
+    }
+    rc.rank = rank;
+    return rc;
+}
+
+long long expected_count(long long genus, long long loops) { return loops == 0 ? 2 * genus : 2 * genus + loops - 1; }
+
+double mean(const std::vector<double>& v) {
+    return v.empty() ? 0.0 : std::accumulate(v.begin(), v.end(), 0.0) / static_cast<double>(v.size());
+}
+
+double mean_faces(const Cycles& c) {
+    double s = 0;
+    for (const auto& x : c.cycles) s += static_cast<double>(x.size());
+    return c.cycles.empty() ? 0.0 : s / static_cast<double>(c.cycles.size());
+}
+
+/// Every cycle: a simple closed chain of edge-adjacent faces of the output.
+void expect_closed_chains(const StripResult& r, const Cycles& c, const std::string& what) {
+    ASSERT_EQ(c.cycles.size(), c.lengths.size()) << what;
+    for (size_t i = 0; i < c.cycles.size(); ++i) {
+        const auto& cyc = c.cycles[i];
+        ASSERT_GE(cyc.size(), 2u) << what << " cycle " << i;
+        std::vector<uint32_t> sorted = cyc;
+        std::sort(sorted.begin(), sorted.end());
+        EXPECT_EQ(std::adjacent_find(sorted.begin(), sorted.end()), sorted.end()) << what << " cycle " << i << " repeats a face";
+        for (size_t k = 0; k < cyc.size(); ++k) {
+            ASSERT_LT(cyc[k], r.order.size());
+            const uint32_t f = r.order[cyc[k]], g = r.order[cyc[(k + 1) % cyc.size()]];
+            EXPECT_NE(r.mesh.shared_halfedge(f, g), kNone) << what << " cycle " << i << " step " << k;
+        }
+        EXPECT_GT(c.lengths[i], 0.0) << what;
+        EXPECT_TRUE(std::isfinite(c.lengths[i])) << what;
+    }
+}
+
+struct Outcome {
+    Cycles strip_cycles, tc_cycles;
+};
+
+/// Strip, cycles, tree-cotree; both sets checked by verify() and by z2_rank().
+/// `degenerate_geometry`: random flips of planar regions make zero-area faces, which the verifier's
+/// geometric checks may flag; only its cycle checks are then required to pass.
+Outcome check_surface(const TriangleSoup& soup, long long genus, long long loops, const std::string& what,
+                      const StripOptions& opt = {}, bool degenerate_geometry = false) {
+    Outcome o;
+    Mesh mesh = Mesh::from_soup(soup);
+    EXPECT_EQ(mesh.genus(), genus) << what;
+    EXPECT_EQ(mesh.num_boundary_loops(), static_cast<uint32_t>(loops)) << what;
+    const long long expected = expected_count(genus, loops);
+    const StripResult r = build_strip(std::move(mesh), opt);
+    const StripArrays a = strip_arrays(r);
+    o.strip_cycles = compute_fundamental_cycles(r);
+    o.tc_cycles = tree_cotree_cycles(r);
+    EXPECT_EQ(static_cast<long long>(o.strip_cycles.cycles.size()), expected) << what << " (steepest ascent)";
+    EXPECT_EQ(static_cast<long long>(o.tc_cycles.cycles.size()), expected) << what << " (tree-cotree)";
+    expect_closed_chains(r, o.strip_cycles, what + " steepest ascent");
+    expect_closed_chains(r, o.tc_cycles, what + " tree-cotree");
+
+    for (const Cycles* c : {&o.strip_cycles, &o.tc_cycles}) {
+        const std::string which = what + (c == &o.strip_cycles ? " steepest ascent" : " tree-cotree");
+        VerifyInput in;
+        in.in_points = soup.points;
+        in.in_faces = soup.triangles;
+        in.out_points = a.points;
+        in.out_faces = a.faces;
+        in.out_parent = a.parent;
+        in.cycles = c->cycles;
+        const VerifyReport rep = verify(in);
+        if (!degenerate_geometry) {
+            EXPECT_TRUE(rep.ok()) << which << ": " << rep.to_string();
+        }
+        for (const std::string& f : rep.failures) EXPECT_NE(f.rfind("cycles", 0), 0u) << which << ": " << f;
+        EXPECT_EQ(rep.cycles_checked, static_cast<size_t>(expected)) << which;
+        EXPECT_EQ(static_cast<long long>(rep.cycle_rank), expected) << which;
+        const RankCheck rc = z2_rank(a.points, a.faces, c->cycles);
+        EXPECT_TRUE(rc.chains_ok) << which << ": " << rc.problem;
+        EXPECT_EQ(static_cast<long long>(rc.rank), expected) << which << " (second-opinion Z2 rank)";
+    }
+    return o;
+}
+
+TriangleSoup load_real(const std::string& name) {
+    const std::string path = test::cgal_mesh_path(name);
+    if (path.empty()) return {};
+    return prepare_soup(read_mesh_file(path), PrepareOptions{}, path);
+}
+
+}  // namespace
+
+// ---- procedural surfaces ----
+
+TEST(Cycles, TorusHasTwo) {
+    for (uint32_t n : {3u, 4u, 8u, 16u}) check_surface(make_torus(2 * n, n), 1, 0, "torus " + std::to_string(n));
+}
+
+TEST(Cycles, DoubleTorusHasFour) {
+    for (uint32_t r : {1u, 2u, 4u}) check_surface(make_genus_surface(2, r), 2, 0, "genus 2 r=" + std::to_string(r));
+}
+
+TEST(Cycles, GenusFiveHasTen) {
+    for (uint32_t r : {1u, 3u}) check_surface(make_genus_surface(5, r), 5, 0, "genus 5 r=" + std::to_string(r));
+}
+
+TEST(Cycles, SphereAndDiskHaveNone) {
+    check_surface(make_icosphere(2), 0, 0, "icosphere");
+    check_surface(make_grid_disk(6, 5), 0, 1, "grid disk");
+}
+
+TEST(Cycles, DiskWithHolesHasKMinusOne) {
+    // k holes in a disk: b = k + 1 boundary loops, so 2g + b - 1 = k cycles.
+    for (uint32_t k : {1u, 2u, 3u, 5u})
+        for (uint32_t r : {1u, 2u, 3u})
+            check_surface(make_disk_with_holes(k, r), 0, k + 1, "disk with " + std::to_string(k) + " holes r=" + std::to_string(r));
+}
+
+TEST(Cycles, GenusWithHolesRandomFlips) {
+    uint64_t seed = 1;
+    for (uint32_t g : {1u, 2u, 3u})
+        for (uint32_t h : {1u, 2u, 4u}) {
+            TriangleSoup s = make_genus_with_holes(g, h, 3);
+            random_edge_flips(s, s.triangles.size() / 4, seed++);
+            check_surface(s, g, h, "genus " + std::to_string(g) + " with " + std::to_string(h) + " holes (flipped)", {}, true);
+        }
+}
+
+TEST(Cycles, RandomTorusAndAnnulusMeshes) {
+    for (uint64_t seed = 1; seed <= 6; ++seed) {
+        TriangleSoup t = make_torus(12, 7);
+        random_edge_flips(t, 60, seed);
+        check_surface(t, 1, 0, "flipped torus seed " + std::to_string(seed), {}, true);
+        TriangleSoup a = make_annulus(10, 3);
+        random_edge_flips(a, 20, seed);
+        check_surface(a, 0, 2, "flipped annulus seed " + std::to_string(seed), {}, true);
+    }
+}
+
+TEST(Cycles, ClosedSurfaceAnySeedFace) {
+    // On a closed surface every seed is "on the boundary" of nothing: count and independence hold.
+    const TriangleSoup s = make_genus_surface(2, 2);
+    for (uint32_t seed : {0u, 17u, 101u}) {
+        StripOptions opt;
+        opt.seed_face = seed;
+        check_surface(s, 2, 0, "genus 2, seed face " + std::to_string(seed), opt);
+    }
+}
+
+TEST(Cycles, InteriorSeedStillClosedChains) {
+    // Seed not on the boundary: only closure/adjacency is promised (header); check that.
+    const TriangleSoup s = make_disk_with_holes(2, 3);
+    Mesh mesh = Mesh::from_soup(s);
+    // A face with no boundary edge.
+    uint32_t interior = kNone;
+    for (uint32_t f = 0; f < mesh.num_faces() && interior == kNone; ++f) {
+        bool b = false;
+        for (uint32_t k = 0; k < 3; ++k) b = b || mesh.is_boundary(Mesh::halfedge(f, k));
+        if (!b && f > 20) interior = f;
+    }
+    ASSERT_NE(interior, kNone);
+    StripOptions opt;
+    opt.seed_face = interior;
+    const StripResult r = build_strip(std::move(mesh), opt);
+    const Cycles c = compute_fundamental_cycles(r);
+    EXPECT_EQ(c.cycles.size(), r.fundamental_positions.size());
+    expect_closed_chains(r, c, "interior seed");
+}
+
+TEST(Cycles, TreeCotreeOnInputMeshWithIdentityOrder) {
+    const TriangleSoup s = make_genus_with_holes(2, 3, 2);
+    const Mesh m = Mesh::from_soup(s);
+    const auto gens = tree_cotree_generators(m);
+    ASSERT_EQ(gens.size(), 2u * 2 + 3 - 1);
+    const RankCheck rc = z2_rank(s.points, s.triangles, gens);
+    EXPECT_TRUE(rc.chains_ok) << rc.problem;
+    EXPECT_EQ(rc.rank, gens.size());
+    EXPECT_THROW(tree_cotree_generators(m, {0, 1, 2}), RequestError);
+}
+
+TEST(Cycles, SecondOpinionDetectsDependence) {
+    // The rank check must not be vacuous: duplicate a cycle and the rank stays put; a cycle
+    // around one interior vertex (its face star) is null-homologous.
+    const TriangleSoup s = make_torus(9, 5);
+    const Mesh m = Mesh::from_soup(s);
+    auto gens = tree_cotree_generators(m);
+    ASSERT_EQ(gens.size(), 2u);
+    gens.push_back(gens[0]);
+    EXPECT_EQ(z2_rank(s.points, s.triangles, gens).rank, 2u);
+    // Star of vertex 0 in rotation order.
+    std::vector<uint32_t> star;
+    const uint32_t h0 = m.vertex_halfedge(0);
+    uint32_t h = h0;
+    do {
+        star.push_back(Mesh::face(h));
+        h = m.twin(Mesh::prev(h));  // next outgoing half-edge around vertex 0
+    } while (h != h0 && h != kNone);
+    const RankCheck rc = z2_rank(s.points, s.triangles, {star});
+    EXPECT_TRUE(rc.chains_ok) << rc.problem;
+    EXPECT_EQ(rc.rank, 0u);
+}
+
+// ---- output files ----
+
+TEST(Cycles, WritesJsonAndObj) {
+    const StripResult r = build_strip(Mesh::from_soup(make_torus(10, 6)));
+    const Cycles c = compute_fundamental_cycles(r);
+    const StripArrays a = strip_arrays(r);
+    const std::string json_path = ::testing::TempDir() + "ss_cycles_test.json";
+    const std::string obj_path = ::testing::TempDir() + "ss_cycles_test.obj";
+    write_cycles_json(json_path, c);
+    write_cycles_obj(obj_path, a, c);
+
+    // The verifier's own reader reads the JSON back identically.
+    EXPECT_EQ(read_cycles_file(json_path), c.cycles);
+    std::ifstream jf(json_path);
+    const nlohmann::json j = nlohmann::json::parse(jf);
+    ASSERT_EQ(j.at("lengths").size(), c.lengths.size());
+    for (size_t i = 0; i < c.lengths.size(); ++i) EXPECT_DOUBLE_EQ(j["lengths"][i].get<double>(), c.lengths[i]);
+
+    // OBJ: 2 points per face of each cycle; each `l` closes on its first vertex; polyline length
+    // recomputed from the file equals the reported length.
+    std::ifstream of(obj_path);
+    std::vector<Point3> v;
+    std::vector<std::vector<size_t>> lines;
+    for (std::string line; std::getline(of, line);) {
+        std::istringstream is(line);
+        std::string tag;
+        is >> tag;
+        if (tag == "v") {
+            Point3 p;
+            is >> p[0] >> p[1] >> p[2];
+            v.push_back(p);
+        } else if (tag == "l") {
+            lines.emplace_back();
+            for (size_t k; is >> k;) lines.back().push_back(k);
+        }
+    }
+    ASSERT_EQ(lines.size(), c.cycles.size());
+    for (size_t i = 0; i < lines.size(); ++i) {
+        EXPECT_EQ(lines[i].size(), 2 * c.cycles[i].size() + 1);
+        EXPECT_EQ(lines[i].front(), lines[i].back());
+        double len = 0;
+        for (size_t k = 0; k + 1 < lines[i].size(); ++k) {
+            const Point3& p = v.at(lines[i][k] - 1);
+            const Point3& q = v.at(lines[i][k + 1] - 1);
+            len += std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]));
+        }
+        EXPECT_NEAR(len, c.lengths[i], 1e-9 * (1 + len));
+    }
+    std::remove(json_path.c_str());
+    std::remove(obj_path.c_str());
+}
+
+TEST(Cycles, WriteToMissingDirectoryThrowsOutputError) {
+    const Cycles c;
+    EXPECT_THROW(write_cycles_json("/nonexistent-dir-singlestrip/c.json", c), OutputError);
+    EXPECT_THROW(write_cycles_obj("/nonexistent-dir-singlestrip/c.obj", StripArrays{}, c), OutputError);
+}
+
+TEST(Cycles, CycleLengthOfTwoUnitTriangles) {
+    // Square [0,1]^2 split on the diagonal: the 2-chain goes centroid -> diagonal midpoint ->
+    // centroid -> same midpoint -> back.
+    StripArrays a;
+    a.points = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+    a.faces = {{0, 1, 2}, {0, 2, 3}};
+    const double d = std::sqrt(2.0) / 6.0;  // centroid to diagonal midpoint
+    EXPECT_NEAR(cycle_length(a, {0, 1}), 4 * d, 1e-12);
+    EXPECT_EQ(cycle_length(a, {0}), 0.0);
+}
+
+// ---- real meshes (libcgal-demo) ----
+
+namespace {
+void check_real(const std::string& name, long long expected_genus, long long expected_loops, long long expected_cycles) {
+    const TriangleSoup s = load_real(name);
+    if (s.triangles.empty()) GTEST_SKIP() << name << " not available";
+    const Mesh m = Mesh::from_soup(s);
+    if (expected_genus >= 0) {
+        EXPECT_EQ(m.genus(), expected_genus) << name;
+    }
+    if (expected_loops >= 0) {
+        EXPECT_EQ(m.num_boundary_loops(), static_cast<uint32_t>(expected_loops)) << name;
+    }
+    const long long g = m.genus();
+    const long long b = m.num_boundary_loops();
+    if (expected_cycles >= 0) {
+        EXPECT_EQ(expected_count(g, b), expected_cycles) << name;
+    }
+    const Outcome o = check_surface(s, g, b, name);
+    std::printf("[cycles] %s: g=%lld h=%lld cycles=%zu | steepest ascent: mean %.4f (%.1f faces) | tree-cotree: mean %.4f (%.1f faces)\n",
+                name.c_str(), g, b, o.strip_cycles.cycles.size(), mean(o.strip_cycles.lengths), mean_faces(o.strip_cycles),
+                mean(o.tc_cycles.lengths), mean_faces(o.tc_cycles));
+    ::testing::Test::RecordProperty("steepest_ascent_mean_length", std::to_string(mean(o.strip_cycles.lengths)));
+    ::testing::Test::RecordProperty("tree_cotree_mean_length", std::to_string(mean(o.tc_cycles.lengths)));
+}
+}  // namespace
+
+TEST(CyclesReal, Eight) { check_real("eight.off", 2, 0, 4); }
+TEST(CyclesReal, Head) { check_real("head.off", 0, 3, 2); }
+TEST(CyclesReal, ElephantWithHoles) { check_real("elephant-with-holes.off", -1, -1, -1); }
+TEST(CyclesReal, Turbine) { check_real("turbine.off", -1, -1, -1); }
+TEST(CyclesReal, Cheese) { check_real("cheese.off", -1, -1, 266); }
