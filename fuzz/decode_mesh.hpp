@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstdio>
 #include <utility>
 #include <vector>
 
@@ -133,6 +134,19 @@ inline void decode_options(FuzzedDataProvider& in, const TriangleSoup& s, Reques
     if (in.ConsumeIntegralInRange<int>(0, 3) == 0) req.strip.source = in.ConsumeIntegralInRange<uint32_t>(0, nv);
     if (in.ConsumeIntegralInRange<int>(0, 3) == 0) req.strip.target = in.ConsumeIntegralInRange<uint32_t>(0, nv);
     req.cycles = in.ConsumeIntegralInRange<int>(0, 3) != 0;
+}
+
+/// Prints the decoded case as an OFF file plus the options (SINGLESTRIP_FUZZ_VERBOSE=1), so a
+/// finding can be replayed with the CLI.
+inline void dump(const TriangleSoup& s, const Request& req) {
+    std::fprintf(stderr, "OFF\n%zu %zu 0\n", s.points.size(), s.triangles.size());
+    for (const auto& p : s.points) std::fprintf(stderr, "%.17g %.17g %.17g\n", p[0], p[1], p[2]);
+    for (const auto& t : s.triangles) std::fprintf(stderr, "3 %u %u %u\n", t[0], t[1], t[2]);
+    std::fprintf(stderr, "# orient=%d greedy=%d cycles=%d seed_face=%lld source=%lld target=%lld constraints:", req.orient,
+                 req.strip.greedy, req.cycles, req.strip.seed_face ? (long long)*req.strip.seed_face : -1LL,
+                 req.strip.source ? (long long)*req.strip.source : -1LL, req.strip.target ? (long long)*req.strip.target : -1LL);
+    for (const auto& [a, b] : req.strip.constraint_edges) std::fprintf(stderr, " %u-%u", a, b);
+    std::fprintf(stderr, "\n");
 }
 
 }  // namespace singlestrip::fuzzcheck
