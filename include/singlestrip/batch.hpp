@@ -1,0 +1,70 @@
+// singlestrip — batch mode: many input files stripped on all cores.
+//
+// `singlestrip strip A.obj B.ply ... --out-dir DIR` runs run_batch(). Each input gets its own
+// result file and JSON report in DIR; a bad file is reported and does not stop the others.
+//
+// Naming. DIR/<stem>.<format> (result), DIR/<stem>.report.json, and with options
+// DIR/<stem>.indices.txt and DIR/<stem>.cycles.json, where <stem> is the input's file name
+// without its extension ("builtin:genus2" -> "builtin_genus2"). When two inputs share a stem, the
+// later ones (in command-line order) get "<stem>-2", "<stem>-3", ... so no output is overwritten.
+//
+// Each file is processed exactly like `singlestrip strip` on that file (read, prepare_soup with
+// the orient option, build_strip, encode, write atomically); the report has the same keys as
+// the CLI's --report plus "ok"/"error"/"exit_code". A failed file leaves no result of its own
+// behind (its finished outputs are removed), but its report is written with the error.
+//
+// Concurrency: files are processed by min(threads, files) std::threads pulling from a shared
+// counter; results are collected in input order, so the summary is deterministic.
+#pragma once
+
+#include <cstdint>
+#include <iosfwd>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace singlestrip {
+
+struct BatchOptions {
+    std::string out_dir;              ///< created if missing
+    std::string format = "ply";       ///< result extension: ply, obj, off, glb or gltf
+    bool write_indices = false;       ///< also <stem>.indices.txt
+    bool cycles = false;              ///< also <stem>.cycles.json (fundamental cycles)
+    bool greedy = true;               ///< StripOptions::greedy
+    bool orient = false;              ///< PrepareOptions::orient
+    std::optional<uint32_t> seed_face;///< applied to every file (out of range: that file fails)
+    unsigned threads = 0;             ///< 0 = std::thread::hardware_concurrency()
+    bool progress = true;             ///< progress bar on stderr, only when it is a terminal
+};
+
+/// Outcome for one input file.
+struct BatchItem {
+    std::string input;
+    std::string output;  ///< result path (even when failed: where it would have been)
+    std::string report;  ///< report path
+    bool ok = false;
+    int exit_code = 0;   ///< the CLI exit code this file alone would have given (errors.hpp)
+    std::string error;   ///< message when !ok
+    uint32_t input_triangles = 0, output_triangles = 0, splits = 0;
+    size_t strip_indices = 0;
+    double seconds = 0;
+};
+
+struct BatchResult {
+    std::vector<BatchItem> items;  ///< in input order
+    size_t failed = 0;
+};
+
+/// Processes `files` as described above. Never throws for a per-file problem (it is recorded in
+/// the item); \throw RequestError for an unknown format, OutputError if out_dir cannot be created.
+BatchResult run_batch_files(const std::vector<std::string>& files, const BatchOptions& options);
+
+/// Fixed-width summary table (one row per file, totals, failures with their messages).
+std::string batch_summary_table(const BatchResult& result);
+
+/// CLI entry point: run_batch_files(), the summary table on `out`, and the exit code: 0 if every
+/// file succeeded, else the exit code of the first failed file (input order), so e.g. a bad mesh
+/// gives 3. Errors of the whole run (bad format, out_dir) are thrown as for run_batch_files().
+int run_batch(const std::vector<std::string>& files, const BatchOptions& options, std::ostream& out);
+
+}  // namespace singlestrip
