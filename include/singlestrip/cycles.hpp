@@ -1,15 +1,22 @@
 // singlestrip — fundamental cycles from the strip's linear order (Gopi, §4, Algorithms 3 and 4).
 //
 // Each fundamental triangle T met during stripification (StripResult::fundamental_positions)
-// seeds one cycle. With positions taken in the strip order: D = the neighbour of T with the
-// largest position, S = the one with the second largest; the cycle is T, S, M1, ..., D where
-// each M is the neighbour of the previous face with the largest position that does not exceed
-// D's (steepest ascent, Algorithm 4: D itself is taken as soon as it is adjacent). Since a face's
-// strip successor is always adjacent, positions strictly increase: the ascent terminates after at
-// most pos(D) - pos(S) steps and visits no face twice. If S comes before T in the strip (possible
-// once a deferred island is spliced in) the ascent could run into T; it skips T, and if it gets
-// stuck (no neighbour with a larger position), the whole path from S to D is replaced by a
-// breadth-first shortest path of faces that avoids T.
+// gets one cycle. With positions taken in the strip order, D = the neighbour of T with the largest
+// position and S = the one with the second largest, the candidates for T are:
+//   (1) steepest ascent (Algorithm 4): T, S, M1, ..., D, each M the neighbour of the previous
+//       face with the largest position not beyond D's (D is taken as soon as it is adjacent). A
+//       face's strip successor is adjacent, so positions strictly increase: it terminates after
+//       at most pos(D) - pos(S) steps and visits no face twice (abandoned if it runs into T);
+//   (2) steepest descent from D to S, the mirror image;
+//   (3) strip segments (§4): T plus the strip between two neighbours on the same side of T;
+//   (4) a breadth-first shortest path from S to D avoiding T.
+// Shortcuts can change the homology class: a steepest ascent often closes around one vertex of T
+// (null-homologous), and since the builder splices deferred islands into the strip, positions
+// are not the order in which faces were taken, so even a strip segment can miss the handle.
+// Hence, in strip order, each T keeps its SHORTEST candidate that is independent in H1(M; Z2) of
+// the cycles kept so far (classes by intersection parity with the tree–cotree basis of
+// tree_cotree.hpp); a T with no independent candidate gets the shortest tree–cotree generator
+// that is (CycleSource::TreeCotree). Cycles::sources says which rule made each cycle.
 //
 // Output. A cycle is a closed chain of edge-adjacent faces of the OUTPUT mesh, as indices into the
 // strip order (face i = StripResult::order[i], i.e. StripArrays::faces[i]): consecutive entries
@@ -19,17 +26,20 @@
 // Guarantees.
 //   * Always: every cycle is closed, simple, made of edge-adjacent output faces, and there is one
 //     cycle per fundamental triangle.
-//   * Seed on the boundary (the builder's default when there is a boundary) or closed surface:
-//     on every mesh tested (tests/test_cycles.cpp, checked independently by verify()) there are
-//     exactly 2g+h-1 cycles (2g closed) and they are independent in H1(M; Z2). This is the
-//     paper's claim; it is tested, not proven here.
+//   * Always: the cycles are independent in H1(M; Z2) whenever there are at most 2g+h-1 of them
+//     (by construction: the selection above). If there are more (possible with an interior
+//     seed), the extra ones are the shortest candidates and are dependent.
+//   * The COUNT is the number of fundamental triangles. Seed on the boundary (the builder's
+//     default when there is a boundary) or closed surface: on every mesh tested it is exactly
+//     2g+h-1 (2g closed), so the cycles are a basis of H1(M; Z2) (tests/test_cycles.cpp, checked
+//     by the independent verifier). This is the paper's claim; tested, not proven here.
 //   * Seed NOT on the boundary of a surface with boundary: the first face's edges act as an extra
-//     boundary loop of the unstriped region (paper §3.1 (b)), so a fundamental triangle may close
-//     a cycle around the seed that is null-homologous, or one cycle may be missing. Count and
-//     independence are then NOT guaranteed; closure and adjacency still are. Use
-//     tree_cotree.hpp for a guaranteed basis.
+//     boundary loop of the unstriped region (paper §3.1 (b)), so there may be one fundamental
+//     triangle too many or too few: count (hence basis) NOT guaranteed; closure, adjacency and
+//     independence (when the count is at most 2g+h-1) still are. tree_cotree.hpp always gives a basis.
 //
-// Complexity: O(sum of cycle lengths) for the ascent (O(F) per cycle), O(F) for the fallback.
+// Complexity: O(F) per fundamental triangle (candidates and their classes) plus O(V + F) for the
+// tree–cotree classifier and O(m * dim^2 / 64) for the selection, m cycles, dim = 2g+h-1.
 #pragma once
 
 #include <cstdint>
@@ -57,6 +67,7 @@ struct Cycles {
 ///      consecutive faces share an edge; `fundamental_positions` index into `order`.
 /// \throw InternalError if a precondition is broken (a fundamental triangle without two
 ///        neighbours, or no path from S to D avoiding T).
+/// Cycles::sources is filled (one entry per cycle).
 Cycles compute_fundamental_cycles(const StripResult& result);
 
 /// Length of the closed polyline through the face centroids and the midpoints of the edges
