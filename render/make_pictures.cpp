@@ -11,6 +11,7 @@
 #include <fstream>
 #include <functional>
 #include <limits>
+#include <optional>
 #include <queue>
 #include <string>
 #include <vector>
@@ -34,6 +35,9 @@ struct Picture {
     render::View view;
     bool cycles = false;
     bool constrained = false;
+    /// Fixed request (the README's worked example) instead of the generated constraint path.
+    std::string constraints_file;
+    std::optional<uint32_t> source, target;
 };
 
 /// Shortest vertex path (edge lengths) from a to b: the constraint polyline of the example.
@@ -74,11 +78,16 @@ uint32_t extreme(const TriangleSoup& s, int axis, double sign) {
 void make(const Picture& p, const fs::path& meshes, const fs::path& out) {
     const fs::path work = out / "render_work";
     fs::create_directories(work);
-    const std::string in = (meshes / p.mesh).string();
+    const std::string in = fs::path(p.mesh).is_absolute() ? p.mesh : (meshes / p.mesh).string();
     TriangleSoup soup = prepare_soup(read_mesh_file(in), {}, in);
     StripOptions opt;
     render::RenderArgs args;
-    if (p.constrained) {
+    if (!p.constraints_file.empty()) {
+        opt.constraint_edges = read_constraints(p.constraints_file, static_cast<uint32_t>(soup.points.size()));
+        opt.source = args.source = p.source;
+        opt.target = args.target = p.target;
+        args.constraints = p.constraints_file;
+    } else if (p.constrained) {
         // A constraint polyline across the model and source/target at its two far ends.
         const uint32_t a = extreme(soup, 0, -1), b = extreme(soup, 0, 1);
         const uint32_t mid_lo = extreme(soup, 1, -1), mid_hi = extreme(soup, 1, 1);
@@ -124,10 +133,13 @@ int main(int argc, char** argv) {
         return 2;
     }
     const std::vector<Picture> pictures = {
-        {"fandisk.off", "fandisk", {40, 30, false}, false, false},
-        {"head.off", "head", {200, 10, false}, true, false},
-        {"eight.off", "eight", {90, 60, false}, true, false},
-        {"elephant.off", "constrained", {270, 15, true}, false, true},
+        {"fandisk.off", "fandisk", {40, 30, false}, false, false, {}, {}, {}},
+        {"head.off", "head", {200, 10, false}, true, false, {}, {}, {}},
+        {"eight.off", "eight", {90, 60, false}, true, false, {}, {}, {}},
+        {"elephant.off", "constrained", {270, 15, true}, false, true, {}, {}, {}},
+        // README worked example: examples/room with its walls, --source 0 --target 650.
+        {std::string(SINGLESTRIP_SOURCE_DIR) + "/examples/room/room.off", "room", {-90, 90, true}, false, false,
+         std::string(SINGLESTRIP_SOURCE_DIR) + "/examples/room/walls.txt", 0u, 650u},
     };
     int rc = 0;
     for (const Picture& p : pictures) {
