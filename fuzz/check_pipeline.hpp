@@ -83,6 +83,10 @@ struct Request {
     bool orient = false;
     StripOptions strip;
     bool cycles = true;       ///< run compute_fundamental_cycles and tree_cotree_cycles
+    /// Known open finding F6 (docs/reliability.md): the strip's fundamental cycles can be fewer
+    /// than 2g+h-1 although cycles.hpp says they are not. When set, a verify() report whose
+    /// only failures are the cycle count is not a finding (independence is still checked).
+    bool tolerate_cycle_count = false;
 };
 
 /// Runs the pipeline on `soup` (see top of file). `outcome` (optional) tells whether the input
@@ -160,7 +164,11 @@ inline std::string check_pipeline(TriangleSoup soup, const Request& req, Outcome
         }
         stage = "verify";
         VerifyReport rep = verify(vi);
-        if (!rep.ok()) return "verify failed:\n" + rep.to_string();
+        if (!rep.ok()) {
+            bool only_count = req.tolerate_cycle_count;
+            for (const auto& f : rep.failures) only_count &= f.rfind("cycles: found ", 0) == 0;
+            if (!only_count) return "verify failed:\n" + rep.to_string();
+        }
 
         if (req.cycles) {
             stage = "tree_cotree_cycles";

@@ -3,7 +3,11 @@
 // a small soup that it returns then goes through the whole checked pipeline (check_pipeline.hpp).
 // The ASCII/binary variants of PLY and STL share a reader: each target skips (returns -1, so
 // libFuzzer does not keep the input) files of the other kind, so its corpus stays on its kind.
+#include <algorithm>
+#include <cctype>
+#include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
 #include <exception>
 #include <new>
@@ -12,6 +16,7 @@
 
 #include "check_pipeline.hpp"
 #include "fuzz_common.hpp"
+#include "known_findings.hpp"
 #include "singlestrip/errors.hpp"
 #include "singlestrip/io.hpp"
 
@@ -45,11 +50,19 @@ bool wanted(std::string_view s) {
     }
 }
 
+bool known_finding(std::string_view s) {
+    using namespace singlestrip::fuzzcheck;
+    if (kFormat == kPlyAscii || kFormat == kPlyBinary) return ply_header_known_finding(s);
+    if (kFormat == kOff) return off_counts_known_finding(s);
+    return false;
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     using namespace singlestrip;
     if (!wanted(std::string_view(reinterpret_cast<const char*>(data), size))) return -1;
+    if (fuzzcheck::skip_known() && known_finding(std::string_view(reinterpret_cast<const char*>(data), size))) return -1;
     const std::string path = fuzzcheck::write_temp(data, size, extension());
     TriangleSoup soup;
     try {
@@ -64,7 +77,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         fuzzcheck::finding(std::string("read_mesh_file threw a non-InputError: ") + typeid(e).name() + ": " + e.what());
     }
     if (auto p = fuzzcheck::check_soup(soup); !p.empty()) fuzzcheck::finding(p);
-    if (soup.triangles.size() <= 2000) {
+    if (soup.triangles.size() <= 2000 && !(fuzzcheck::skip_known() && fuzzcheck::has_degenerate_face(soup))) {
         fuzzcheck::Request req;
         req.orient = size % 2 == 0;  // both with and without re-orientation, cheaply
         if (auto p = fuzzcheck::check_pipeline(std::move(soup), req); !p.empty()) fuzzcheck::finding(p);

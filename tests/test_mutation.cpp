@@ -1,0 +1,265 @@
+// Hostile input (issue 7): every prefix and a deterministic set of single-byte mutations of every
+// sample mesh in tests/data must give a clean InputError or a soup that the whole pipeline turns
+// into a strip that passes verify() (fuzz/check_pipeline.hpp) — never a crash or another
+// exception. Headers that declare absurd counts must be refused without allocating for them
+// (checked with a global operator new that records the largest request) and without hanging
+// (each case runs in a forked child with an alarm as a hang guard).
+#include <gtest/gtest.h>
+
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <new>
+#include <string>
+#include <vector>
+
+#include "../fuzz/check_pipeline.hpp"
+#include "../fuzz/known_findings.hpp"
+#include "singlestrip/errors.hpp"
+#include "singlestrip/io.hpp"
+
+// ---- allocation probe: the largest single request since reset; huge requests fail at once -----
+namespace {
+std::atomic<size_t> g_largest_request{0};
+constexpr size_t kRefuseAbove = size_t{1} << 30;  // never really allocate more than 1 GiB
+void* probe_alloc(size_t n) {
+    size_t prev = g_largest_request.load(std::memory_order_relaxed);
+    while (n > prev && !g_largest_request.compare_exchange_weak(prev, n, std::memory_order_relaxed)) {
+    }
+    if (n > kRefuseAbove) throw std::bad_alloc();
+    if (void* p = std::malloc(n ? n : 1)) return p;
+    throw std::bad_alloc();
+}
+}  // namespace
+void* operator new(size_t n) { return probe_alloc(n); }
+void* operator new[](size_t n) { return probe_alloc(n); }
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete[](void* p) noexcept { std::free(p); }
+void operator delete(void* p, size_t) noexcept { std::free(p); }
+void operator delete[](void* p, size_t) noexcept { std::free(p); }
+
+using namespace singlestrip;
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path data_dir() { return fs::path(SINGLESTRIP_SOURCE_DIR) / "tests" / "data"; }
+
+fs::path scratch_dir() {
+    static const fs::path dir = [] {
+        fs::path base = fs::exists("/dev/shm") ? fs::path("/dev/shm") : fs::temp_directory_path();
+        fs::path d = base / ("singlestrip_mutation_" + std::to_string(getpid()));
+        fs::create_directories(d);
+        return d;
+    }();
+    return dir;
+}
+
+std::string slurp(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+std::string write_case(const std::string& bytes, const std::string& ext) {
+    const fs::path p = scratch_dir() / ("case" + ext);
+    std::ofstream(p, std::ios::binary | std::ios::trunc).write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    return p.string();
+}
+
+std::vector<fs::path> sample_meshes() {
+    std::vector<fs::path> out;
+    for (const auto& e : fs::directory_iterator(data_dir())) {
+        std::string ext = e.path().extension().string();
+        std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+        if (ext == ".obj" || ext == ".off" || ext == ".ply" || ext == ".stl") out.push_back(e.path());
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+struct Tally {
+    size_t cases = 0, refused = 0, stripped = 0, skipped_known = 0;
+    std::vector<std::string> failures;
+    void fail(const std::string& what) {
+        if (failures.size() < 20) failures.push_back(what);
+        else if (failures.size() == 20) failures.push_back("(more failures not shown)");
+    }
+};
+
+/// One case: the bytes as a file with extension `ext`. Known open findings (fuzz/known_findings.hpp)
+/// are skipped and counted.
+void run_case(const std::string& bytes, const std::string& ext, const std::string& label, Tally& t) {
+    ++t.cases;
+    if ((ext == ".ply" && fuzzcheck::ply_header_known_finding(bytes)) || (ext == ".off" && fuzzcheck::off_counts_known_finding(bytes))) {
+        ++t.skipped_known;
+        return;
+    }
+    const std::string path = write_case(bytes, ext);
+    TriangleSoup soup;
+    try {
+        soup = read_mesh_file(path);
+    } catch (const InputError& e) {
+        ++t.refused;
+        if (std::string(e.what()).rfind(path, 0) != 0) t.fail(label + ": InputError does not name the file: " + e.what());
+        return;
+    } catch (const std::exception& e) {
+        t.fail(label + ": read_mesh_file threw a non-InputError: " + e.what());
+        return;
+    }
+    if (auto p = fuzzcheck::check_soup(soup); !p.empty()) return t.fail(label + ": " + p);
+    if (fuzzcheck::has_degenerate_face(soup)) {
+        ++t.skipped_known;
+        return;
+    }
+    fuzzcheck::Outcome outcome;
+    if (auto p = fuzzcheck::check_pipeline(std::move(soup), {}, &outcome); !p.empty()) return t.fail(label + ": " + p);
+    ++(outcome == fuzzcheck::Outcome::Stripped ? t.stripped : t.refused);
+}
+
+void report(const Tally& t) {
+    std::printf("  %zu cases: %zu refused with InputError/RequestError, %zu stripped and verified, %zu skipped (known open findings)\n",
+                t.cases, t.refused, t.stripped, t.skipped_known);
+    for (const auto& f : t.failures) ADD_FAILURE() << f;
+}
+
+}  // namespace
+
+TEST(Mutation, EveryPrefixOfEverySampleIsRefusedOrVerified) {
+    const auto files = sample_meshes();
+    ASSERT_GE(files.size(), 6u) << "tests/data should hold a sample file per format";
+    Tally t;
+    for (const auto& f : files) {
+        const std::string bytes = slurp(f);
+        for (size_t n = 0; n <= bytes.size(); ++n)
+            run_case(bytes.substr(0, n), f.extension().string(), f.filename().string() + " prefix " + std::to_string(n), t);
+    }
+    report(t);
+    EXPECT_GT(t.stripped, 0u);  // full files (the last prefix) of the valid samples strip
+}
+
+TEST(Mutation, SingleByteMutationsAreRefusedOrVerified) {
+    // Replacement bytes chosen to hit number syntax, separators, keywords and binary counts.
+    const unsigned char values[] = {0x00, 0xff, '0', '9', '-', '.', ' ', '\n', 'e', 0x7f};
+    Tally t;
+    for (const auto& f : sample_meshes()) {
+        const std::string bytes = slurp(f);
+        for (size_t i = 0; i < bytes.size(); ++i) {
+            std::string m = bytes;
+            for (unsigned char v : values) {
+                if (static_cast<unsigned char>(bytes[i]) == v) continue;
+                m[i] = static_cast<char>(v);
+                run_case(m, f.extension().string(), f.filename().string() + " byte " + std::to_string(i) + " = " + std::to_string(v), t);
+            }
+            m[i] = static_cast<char>(bytes[i] ^ 0x01);  // low bit: a neighbouring digit or count
+            run_case(m, f.extension().string(), f.filename().string() + " byte " + std::to_string(i) + " ^ 1", t);
+        }
+    }
+    report(t);
+    EXPECT_GT(t.stripped, 0u);
+}
+
+// ---- resource limits -------------------------------------------------------------------------
+
+namespace {
+
+/// Reads `bytes` as a file in a forked child (so a crash or hang cannot take the suite down).
+/// Returns "" when read_mesh_file threw InputError and no single allocation exceeded
+/// `max_alloc`; else what happened.
+std::string refused_cheaply(const std::string& bytes, const std::string& ext, size_t max_alloc = size_t{64} << 20) {
+    const std::string path = write_case(bytes, ext);
+    std::fflush(nullptr);
+    const pid_t pid = fork();
+    if (pid == 0) {
+        alarm(60);  // hang guard only (the reads take milliseconds): SIGALRM ends the child
+        g_largest_request = 0;
+        int code = 0;
+        try {
+            (void)read_mesh_file(path);
+            code = 10;
+        } catch (const InputError&) {
+            code = 0;
+        } catch (...) {
+            code = 11;
+        }
+        if (code == 0 && g_largest_request.load() > max_alloc) {
+            std::fprintf(stderr, "largest allocation: %zu bytes\n", g_largest_request.load());
+            code = 12;
+        }
+        _exit(code);
+    }
+    int st = 0;
+    waitpid(pid, &st, 0);
+    if (WIFSIGNALED(st)) return WTERMSIG(st) == SIGALRM ? "hang (killed after 60 s)" : "killed by signal " + std::to_string(WTERMSIG(st));
+    switch (WEXITSTATUS(st)) {
+        case 0: return {};
+        case 10: return "accepted";
+        case 11: return "threw something other than InputError";
+        case 12: return "refused, but only after allocating more than " + std::to_string(max_alloc >> 20) + " MiB at once";
+        default: return "child exit " + std::to_string(WEXITSTATUS(st));
+    }
+}
+
+std::string ply_header(const std::string& format, const std::string& nv, const std::string& nf, const std::string& list = "uchar int") {
+    return "ply\nformat " + format + " 1.0\nelement vertex " + nv + "\nproperty float x\nproperty float y\nproperty float z\nelement face " + nf +
+           "\nproperty list " + list + " vertex_indices\nend_header\n";
+}
+
+std::string binary_stl(uint32_t declared, size_t real) {
+    std::string s(80, '\0');
+    s.append(reinterpret_cast<const char*>(&declared), 4);  // little-endian host (x86-64, aarch64)
+    s.append(50 * real, '\0');
+    return s;
+}
+
+}  // namespace
+
+TEST(ResourceLimits, AbsurdVertexCountsAreRefused) {
+    EXPECT_EQ(refused_cheaply("OFF\n1000000000000 1 0\n", ".off"), "");
+    EXPECT_EQ(refused_cheaply(ply_header("ascii", "1000000000000", "1"), ".ply"), "");
+    EXPECT_EQ(refused_cheaply(ply_header("binary_little_endian", "1000000000000", "1"), ".ply"), "");
+    EXPECT_EQ(refused_cheaply(ply_header("binary_little_endian", "100000000", "100000000") + std::string(64, '\0'), ".ply"), "");
+}
+
+TEST(ResourceLimits, AbsurdTriangleCountInTinyBinaryStlIsRefused) {
+    EXPECT_EQ(refused_cheaply(binary_stl(1000000000u, 1), ".stl"), "");
+    EXPECT_EQ(refused_cheaply(binary_stl(0xffffffffu, 0), ".stl"), "");
+}
+
+TEST(ResourceLimits, HugeListCountInBinaryPlyIsRefused) {
+    std::string s = ply_header("binary_little_endian", "3", "1", "uint int");
+    const float xyz[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+    s.append(reinterpret_cast<const char*>(xyz), sizeof xyz);
+    const uint32_t count = 0x7fffffffu;
+    s.append(reinterpret_cast<const char*>(&count), 4);
+    s.append(12, '\0');
+    EXPECT_EQ(refused_cheaply(s, ".ply"), "");
+}
+
+// Open findings F4 and F2 (docs/reliability.md): enable when src/io/read_mesh.cpp checks the
+// declared counts against the file size before calling CGAL.
+TEST(ResourceLimits, DISABLED_OffCountsAreCheckedBeforeAllocating) {
+    EXPECT_EQ(refused_cheaply("OFF\n100000000 100000000 0\n", ".off"), "");
+    EXPECT_EQ(refused_cheaply("OFF\n3 100000000 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", ".off"), "");
+}
+
+TEST(ResourceLimits, DISABLED_PlyElementWithoutPropertiesDoesNotHang) {
+    EXPECT_EQ(refused_cheaply("ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                              "element face 1\nproperty list uchar int vertex_indices\nelement foo 1000000000000\nend_header\n"
+                              "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
+                              ".ply"),
+              "");
+}
+
+TEST(ResourceLimits, DISABLED_PlyPropertyBeforeElementDoesNotCrash) {
+    EXPECT_EQ(refused_cheaply("ply\nformat binary_little_endian 1.0\nproperty float x\nelement vertex 0\nend_header\n", ".ply"), "");
+}
