@@ -1,4 +1,4 @@
-// singlestrip command line tool: info, strip, verify.
+// singlestrip command line tool: info, strip (one file, or a batch with --out-dir), verify, render.
 //
 // Exit codes (errors.hpp): 0 ok; 2 bad command line; 3 bad input (file or mesh; also `info` on
 // a mesh that is not valid for stripping); 4 request cannot be met; 5 verification failed;
@@ -16,7 +16,9 @@
 #include <string>
 #include <vector>
 
+#include "singlestrip/batch.hpp"
 #include "singlestrip/cycles.hpp"
+#include "singlestrip/gltf.hpp"
 #include "singlestrip/encode.hpp"
 #include "singlestrip/errors.hpp"
 #include "singlestrip/generators.hpp"
@@ -25,6 +27,9 @@
 #include "singlestrip/strip.hpp"
 #include "singlestrip/validate.hpp"
 #include "singlestrip/verify.hpp"
+#ifdef SINGLESTRIP_HAVE_RENDER
+#include "render/render.hpp"
+#endif
 
 namespace ss = singlestrip;
 using json = nlohmann::json;
@@ -132,8 +137,12 @@ int run_info(const std::string& input, bool as_json, bool orient) {
 }
 
 struct StripArgs {
+    std::vector<std::string> inputs;
     std::string input, output;
-    std::optional<std::string> indices, report, constraints, cycles;
+    std::optional<std::string> indices, report, constraints, cycles, cycles_obj, out_dir;
+    std::string format = "ply";
+    unsigned jobs = 0;
+    bool with_indices = false, with_cycles = false;
     std::optional<uint32_t> seed_face, source, target;
     bool no_greedy = false, orient = false;
 };
@@ -156,7 +165,8 @@ private:
 };
 
 int run_strip(const StripArgs& a) {
-    ss::output_format_for(a.output);  // unknown extension: RequestError before any work
+    // Unknown extension: RequestError before any work.
+    if (!ss::is_gltf_path(a.output)) ss::output_format_for(a.output);
     Stopwatch clock;
     ss::TriangleSoup soup = load_input(a.input);
     const double t_read = clock.lap();
@@ -175,19 +185,24 @@ int run_strip(const StripArgs& a) {
     ss::StripArrays arrays = ss::strip_arrays(result);
     const std::vector<uint32_t> indices = ss::encode_triangle_strip(arrays.faces);
     std::optional<ss::Cycles> cycles;
-    if (a.cycles) cycles = ss::compute_fundamental_cycles(result);
+    if (a.cycles || a.cycles_obj) cycles = ss::compute_fundamental_cycles(result);
     const double t_strip = clock.lap();
 
     OutputSet outputs;
-    ss::write_strip_mesh(a.output, arrays.points, arrays.faces, arrays.parent);
+    if (ss::is_gltf_path(a.output)) ss::write_gltf_strip(a.output, arrays, indices);
+    else ss::write_strip_mesh(a.output, arrays.points, arrays.faces, arrays.parent);
     outputs.done(a.output);
     if (a.indices) {
         ss::write_indices(*a.indices, indices);
         outputs.done(*a.indices);
     }
-    if (cycles) {
+    if (cycles && a.cycles) {
         ss::write_cycles_json(*a.cycles, *cycles);
         outputs.done(*a.cycles);
+    }
+    if (cycles && a.cycles_obj) {
+        ss::write_cycles_obj(*a.cycles_obj, arrays, *cycles);
+        outputs.done(*a.cycles_obj);
     }
     const double t_write_files = clock.lap();
 
@@ -208,7 +223,13 @@ int run_strip(const StripArgs& a) {
     r["indices_per_triangle"] = static_cast<double>(indices.size()) / in_tris;
     r["extra_percent"] = 100.0 * (static_cast<double>(st.output_triangles) - static_cast<double>(st.input_triangles)) / in_tris;
     r["options"] = {{"greedy", opt.greedy}, {"orient", a.orient}, {"constraint_edges", opt.constraint_edges.size()}};
-    if (cycles) r["cycles"] = cycles->cycles.size();
+    if (cycles) {
+        r["cycles"] = cycles->cycles.size();
+        r["cycle_lengths"] = cycles->lengths;
+        size_t faces = 0;
+        for (const auto& c : cycles->cycles) faces += c.size();
+        r["cycle_faces_total"] = faces;
+    }
     if (a.seed_face) r["options"]["seed_face"] = *a.seed_face;
     if (a.source) r["options"]["source"] = *a.source;
     if (a.target) r["options"]["target"] = *a.target;
@@ -238,6 +259,9 @@ struct VerifyArgs {
 
 int run_verify(const VerifyArgs& a) {
     ss::VerifyReport rep;
+    if (ss::is_gltf_path(a.output))
+        throw ss::RequestError(a.output + ": verify reads .ply, .obj or .off results (glTF stores float32 positions, "
+                               "too coarse for the exact checks); write a .ply with the same options to verify");
     if (is_builtin(a.input)) {
         // The built-in model has no file: assemble what verify_files() would read.
         ss::TriangleSoup in = load_input(a.input);
@@ -288,8 +312,13 @@ int main(int argc, char** argv) {
 
     StripArgs sa;
     auto* strip = app.add_subcommand("strip", "Turn the mesh into one triangle strip");
-    strip->add_option("INPUT", sa.input, "Input mesh file or builtin:genus2")->required();
-    strip->add_option("-o,--output", sa.output, "Output mesh (.ply binary with parent, .obj, .off), faces in strip order")->required();
+    strip->add_option("INPUT", sa.inputs, "Input mesh file(s) or builtin:genus2 (several need --out-dir)")->required();
+    strip->add_option("-o,--output", sa.output, "Output mesh (.ply binary with parent, .obj, .off, .glb/.gltf), faces in strip order");
+    strip->add_option("--out-dir", sa.out_dir, "Batch mode: strip every INPUT on all cores into DIR (<stem>.<format> + <stem>.report.json)");
+    strip->add_option("--format", sa.format, "Batch mode: result format (ply, obj, off, glb, gltf)")->capture_default_str();
+    strip->add_option("-j,--jobs", sa.jobs, "Batch mode: worker threads (0 = all cores)");
+    strip->add_flag("--with-indices", sa.with_indices, "Batch mode: also write <stem>.indices.txt");
+    strip->add_flag("--with-cycles", sa.with_cycles, "Batch mode: also write <stem>.cycles.json");
     strip->add_option("--indices", sa.indices, "Write the GL_TRIANGLE_STRIP index sequence (text)");
     strip->add_option("--report", sa.report, "Write a JSON report");
     strip->add_option("--seed-face", sa.seed_face, "Input face to start the strip from");
@@ -299,6 +328,7 @@ int main(int argc, char** argv) {
     strip->add_option("--source", sa.source, "The strip starts at a face incident to this input vertex");
     strip->add_option("--target", sa.target, "The strip ends at a face incident to this input vertex");
     strip->add_option("--cycles", sa.cycles, "Write the fundamental cycles (paper section 4) as JSON {\"cycles\": [[face, ...], ...], \"lengths\": [...]}");
+    strip->add_option("--cycles-obj", sa.cycles_obj, "Write the fundamental cycles as OBJ polylines through face centroids and shared-edge midpoints");
 
     VerifyArgs va;
     auto* verify = app.add_subcommand("verify", "Independently check a strip output against its input (exit 5 on failure)");
@@ -309,6 +339,22 @@ int main(int argc, char** argv) {
     verify->add_option("--source", va.source, "Required first-face vertex");
     verify->add_option("--target", va.target, "Required last-face vertex");
     verify->add_option("--cycles", va.cycles, "Cycles JSON to check for independence");
+
+#ifdef SINGLESTRIP_HAVE_RENDER
+    ss::render::RenderArgs ra;
+    auto* render = app.add_subcommand("render", "Draw a strip result to a PNG (offscreen OpenGL, strip coloured along its order)");
+    render->add_option("RESULT", ra.input, "Result mesh written by `singlestrip strip` (.ply/.obj/.off)")->required();
+    render->add_option("-o,--output", ra.output, "PNG picture")->required();
+    render->add_option("--cycles", ra.cycles, "Cycles JSON to draw");
+    render->add_option("--constraints", ra.constraints, "Constraint polylines to draw");
+    render->add_option("--source", ra.source, "Vertex marked green (strip start)");
+    render->add_option("--target", ra.target, "Vertex marked red (strip end)");
+    render->add_option("--azimuth", ra.view.azimuth_deg, "Camera azimuth (degrees)")->capture_default_str();
+    render->add_option("--elevation", ra.view.elevation_deg, "Camera elevation (degrees)")->capture_default_str();
+    render->add_flag("--z-up", ra.view.z_up, "Model's up axis is +z (default +y)");
+    render->add_option("--width", ra.style.width, "Picture width in pixels")->capture_default_str();
+    render->add_option("--height", ra.style.height, "Picture height in pixels")->capture_default_str();
+#endif
 
     try {
         app.parse(argc, argv);
@@ -325,8 +371,35 @@ int main(int argc, char** argv) {
 
     try {
         if (info->parsed()) return run_info(info_input, info_json_flag, info_orient);
-        if (strip->parsed()) return run_strip(sa);
+        if (strip->parsed()) {
+            if (sa.out_dir) {
+                if (!sa.output.empty() || sa.constraints || sa.source || sa.target || sa.report || sa.indices || sa.cycles || sa.cycles_obj) {
+                    std::cerr << "singlestrip: error: --out-dir (batch mode) cannot be combined with -o, --report, --indices, "
+                                 "--cycles, --cycles-obj, --constraints, --source or --target (they are per file)\n";
+                    return ss::kExitUsage;
+                }
+                ss::BatchOptions b;
+                b.out_dir = *sa.out_dir;
+                b.format = sa.format;
+                b.write_indices = sa.with_indices;
+                b.cycles = sa.with_cycles;
+                b.greedy = !sa.no_greedy;
+                b.orient = sa.orient;
+                b.seed_face = sa.seed_face;
+                b.threads = sa.jobs;
+                return ss::run_batch(sa.inputs, b, std::cout);
+            }
+            if (sa.inputs.size() != 1 || sa.output.empty()) {
+                std::cerr << "singlestrip: error: strip needs exactly one INPUT and -o OUT (or several INPUTs with --out-dir DIR)\n";
+                return ss::kExitUsage;
+            }
+            sa.input = sa.inputs.front();
+            return run_strip(sa);
+        }
         if (verify->parsed()) return run_verify(va);
+#ifdef SINGLESTRIP_HAVE_RENDER
+        if (render->parsed()) return ss::render::run_render_command(ra);
+#endif
         return ss::kExitUsage;
     } catch (const ss::Error& e) {
         std::cerr << "singlestrip: error: " << e.what() << '\n';
