@@ -14,11 +14,12 @@
 
 namespace singlestrip::fuzzcheck {
 
-/// F1 (crash) and F2 (hang) in CGAL's PLY reader: a `property` line before any `element`, or an
-/// element without properties.
+/// F1 (crash) and F2 (hang) in CGAL's PLY reader: a `property` line before any `element`, or
+/// (in a complete header) an element without properties.
 inline bool ply_header_known_finding(std::string_view s) {
     if (s.substr(0, 3) != "ply") return false;
-    const std::string_view header = s.substr(0, s.find("end_header"));
+    const size_t end = s.find("end_header");
+    const std::string_view header = s.substr(0, end);
     bool in_element = false, has_property = true;
     size_t pos = 0;
     while (pos < header.size()) {
@@ -31,7 +32,7 @@ inline bool ply_header_known_finding(std::string_view s) {
         line = line.substr(first);
         const std::string_view word = line.substr(0, line.find_first_of(" \t\r"));
         if (word == "element") {
-            if (in_element && !has_property) return true;
+            if (in_element && !has_property && end != std::string_view::npos) return true;
             in_element = true;
             has_property = false;
         } else if (word == "property") {
@@ -39,10 +40,11 @@ inline bool ply_header_known_finding(std::string_view s) {
             has_property = true;
         }
     }
-    return in_element && !has_property;
+    return in_element && !has_property && end != std::string_view::npos;
 }
 
-/// F4: OFF header counts that cannot fit in the file (CGAL allocates for them first).
+/// F4: OFF header counts that cannot fit in the file (CGAL allocates for them first); only
+/// counts large enough for the allocation to matter (> 10^6 elements, 24 MB).
 inline bool off_counts_known_finding(std::string_view s) {
     std::string text(s.substr(0, 4096));
     for (size_t h = text.find('#'); h != std::string::npos; h = text.find('#', h)) {
@@ -56,7 +58,7 @@ inline bool off_counts_known_finding(std::string_view s) {
     const double nv = std::strtod(p, &e1);
     const double nf = std::strtod(e1, &e2);
     if (e1 == p || e2 == e1) return false;
-    return 6.0 * nv + 8.0 * nf > static_cast<double>(s.size()) + 16.0;
+    return nv + nf > 1e6 && 6.0 * nv + 8.0 * nf > static_cast<double>(s.size()) + 16.0;
 }
 
 /// F5: verify() rejects correct strips of zero-area or nearly degenerate faces.
