@@ -18,7 +18,19 @@ namespace singlestrip::fuzzcheck {
 /// (in a complete header) an element without properties.
 inline bool ply_header_known_finding(std::string_view s) {
     if (s.substr(0, 3) != "ply") return false;
-    const size_t end = s.find("end_header");
+    // The header ends at a line whose first word is end_header (as CGAL reads it).
+    size_t end = std::string_view::npos;
+    for (size_t pos = 0; pos < s.size() && pos < 65536;) {
+        size_t eol = s.find('\n', pos);
+        if (eol == std::string_view::npos) eol = s.size();
+        std::string_view line = s.substr(pos, eol - pos);
+        const size_t first = line.find_first_not_of(" \t\r");
+        if (first != std::string_view::npos && line.substr(first, line.find_first_of(" \t\r", first) - first) == "end_header") {
+            end = pos;
+            break;
+        }
+        pos = eol + 1;
+    }
     const std::string_view header = s.substr(0, end);
     bool in_element = false, has_property = true;
     size_t pos = 0;
@@ -45,7 +57,20 @@ inline bool ply_header_known_finding(std::string_view s) {
 
 /// F4: OFF header counts that cannot fit in the file (CGAL allocates for them first); only
 /// counts large enough for the allocation to matter (> 10^6 elements, 24 MB).
+/// F8: an OFF line starting with an integer >= 10^6 (a face's corner count: CGAL resizes the
+/// polygon to it before reading the indices).
 inline bool off_counts_known_finding(std::string_view s) {
+    for (size_t pos = 0; pos < s.size();) {
+        size_t eol = s.find('\n', pos);
+        if (eol == std::string_view::npos) eol = s.size();
+        const std::string line(s.substr(pos, std::min<size_t>(eol - pos, 64)));
+        pos = eol + 1;
+        const char* p = line.c_str();
+        while (*p == ' ' || *p == '\t' || *p == '\r' || *p == '\v' || *p == '\f') ++p;
+        char* e = nullptr;
+        const double first = std::strtod(p, &e);
+        if (e != p && first >= 1e6) return true;
+    }
     std::string text(s.substr(0, 4096));
     for (size_t h = text.find('#'); h != std::string::npos; h = text.find('#', h)) {
         const size_t eol = text.find('\n', h);

@@ -255,6 +255,11 @@ TEST(ResourceLimits, DISABLED_OffCountsAreCheckedBeforeAllocating) {
     EXPECT_EQ(refused_cheaply("OFF\n3 100000000 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", ".off"), "");
 }
 
+// Open finding F8: CGAL resizes an OFF polygon to its declared corner count before reading it.
+TEST(ResourceLimits, DISABLED_OffFaceCornerCountIsCheckedBeforeAllocating) {
+    EXPECT_EQ(refused_cheaply("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n300000000 0 1 2\n", ".off"), "");
+}
+
 TEST(ResourceLimits, DISABLED_PlyElementWithoutPropertiesDoesNotHang) {
     EXPECT_EQ(refused_cheaply("ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
                               "element face 1\nproperty list uchar int vertex_indices\nelement foo 1000000000000\nend_header\n"
