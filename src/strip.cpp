@@ -14,6 +14,7 @@
 #include "singlestrip/strip.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <string>
 
 #include "singlestrip/errors.hpp"
@@ -64,6 +65,7 @@ private:
 
     // scratch
     std::vector<uint32_t> side_[2];
+    uint32_t searched_ = kNone;  ///< the face whose islands side_ holds
     std::vector<uint32_t> scratch_;
 
     [[nodiscard]] bool passable(uint32_t h) const { return !mesh_.is_boundary(h) && !blocked_[h]; }
@@ -87,17 +89,26 @@ private:
     void insert_after(uint32_t cursor, uint32_t f);
     void take(uint32_t cursor, uint32_t f);
 
-    enum class Kind { Safe, Bridge };
+    /// Safe: removing the face keeps the region connected. Bridge: it does not. Unknown: the
+    /// cheap tests failed and the region has cycles, so only a search can tell.
+    enum class Kind { Safe, Bridge, Unknown };
     struct Classification {
         Kind kind = Kind::Safe;
         bool fundamental = false;
-        uint32_t small_side = 0;  ///< 0: the island of `a`, 1: the island of `b` (Bridge only)
+        uint32_t small_side = kNone;  ///< 0: island of `a`, 1: of `b`; kNone until searched
         uint32_t a = kNone, b = kNone;  ///< N's open neighbours other than T
         uint32_t ha = kNone, hb = kNone;  ///< N's half-edges towards a and b
     };
-    Classification classify(uint32_t n, uint32_t from, uint32_t r);
+    Classification classify_local(uint32_t n, uint32_t from, uint32_t r) const;
+    bool resolve(Classification& c, uint32_t n, uint32_t r, size_t budget = SIZE_MAX);
+    Classification classify(uint32_t n, uint32_t from, uint32_t r) {
+        Classification c = classify_local(n, from, r);
+        resolve(c, n, r);
+        return c;
+    }
     bool fan_connects(uint32_t n, uint32_t ha, uint32_t hb, uint32_t r) const;
-    int bidirectional_search(uint32_t n, uint32_t a, uint32_t b, uint32_t r);
+    static constexpr int kMeet = -1, kOverBudget = 2;
+    int bidirectional_search(uint32_t n, uint32_t a, uint32_t b, uint32_t r, size_t budget = SIZE_MAX);
 
     void grow(uint32_t cursor, uint32_t region, uint32_t dest);
     uint32_t take_bridge(uint32_t cursor, uint32_t n, uint32_t region, uint32_t dest, const Classification& c);
@@ -211,7 +222,7 @@ bool Builder::fan_connects(uint32_t n, uint32_t ha, uint32_t hb, uint32_t r) con
 // Alternating search from a and from b through open faces of r, never entering n.
 // Returns -1 if they meet (connected), else the side (0 = a, 1 = b) that ran out first; that
 // side's faces are then in side_[s]. Cost O(size of the smaller island) when they are separated.
-int Builder::bidirectional_search(uint32_t n, uint32_t a, uint32_t b, uint32_t r) {
+int Builder::bidirectional_search(uint32_t n, uint32_t a, uint32_t b, uint32_t r, size_t budget) {
     stamp_base_ += 2;
     if (stamp_base_ >= 0xfffffff0u) {
         std::fill(stamp_.begin(), stamp_.end(), 0);
@@ -227,6 +238,10 @@ int Builder::bidirectional_search(uint32_t n, uint32_t a, uint32_t b, uint32_t r
     stamp_[b] = mark[1];
     stamp_[n] = mark[0];  // never enter n (both sides treat it as foreign but not as a meeting)
     for (;;) {
+        if (head[0] + head[1] > budget) {
+            stamp_[n] = 0;
+            return kOverBudget;
+        }
         for (int s = 0; s < 2; ++s) {
             if (head[s] == side_[s].size()) {
                 stamp_[n] = 0;
@@ -248,7 +263,9 @@ int Builder::bidirectional_search(uint32_t n, uint32_t a, uint32_t b, uint32_t r
     }
 }
 
-Builder::Classification Builder::classify(uint32_t n, uint32_t from, uint32_t r) {
+// Cheap part of the classification: open neighbours, then the local cavity test. In a region
+// without cycles (beta 0, a disk) a failed cavity test proves a bridge without any search.
+Builder::Classification Builder::classify_local(uint32_t n, uint32_t from, uint32_t r) const {
     Classification c;
     for (uint32_t k = 0; k < 3; ++k) {
         const uint32_t h = 3 * n + k;
@@ -264,17 +281,29 @@ Builder::Classification Builder::classify(uint32_t n, uint32_t from, uint32_t r)
     }
     if (c.b == kNone) return c;  // at most one open neighbour: removing n keeps R connected
     if (fan_connects(n, c.ha, c.hb, r)) return c;
-    const int s = bidirectional_search(n, c.a, c.b, r);
-    if (s < 0) {
+    c.kind = region_beta_[r] <= 0 ? Kind::Bridge : Kind::Unknown;
+    return c;
+}
+
+// Expensive part: the bidirectional search decides Unknown, and finds the smaller island of a
+// bridge (left in side_[c.small_side]); call it right before taking a bridge. With a budget
+// (faces visited) it may return false: still Unknown.
+bool Builder::resolve(Classification& c, uint32_t n, uint32_t r, size_t budget) {
+    if (c.kind == Kind::Safe || (c.kind == Kind::Bridge && c.small_side != kNone && searched_ == n)) return true;
+    const int s = bidirectional_search(n, c.a, c.b, r, budget);
+    searched_ = n;
+    if (s == kOverBudget) return false;
+    if (s == kMeet) {
         // A split candidate that is not a bridge (§3.1). Impossible in a disk.
         if (region_beta_[r] <= 0)
             throw InternalError("strip builder: fundamental triangle in a region without cycles (topology tracking broken)");
+        c.kind = Kind::Safe;
         c.fundamental = true;
-        return c;
+        return true;
     }
     c.kind = Kind::Bridge;
     c.small_side = static_cast<uint32_t>(s);
-    return c;
+    return true;
 }
 
 void Builder::note_fundamental(uint32_t f, uint32_t r) {
@@ -374,12 +403,26 @@ void Builder::grow(uint32_t cursor, uint32_t region, uint32_t dest) {
         };
         if (nc == 2 && better(1, 0)) std::swap(idx[0], idx[1]);
 
+        // Cheap tests first for every candidate considered; searches only if none passes.
+        // Without greedy turns only the preferred neighbour is considered (paper, Algorithm 1).
+        const uint32_t considered = opt_.greedy ? nc : 1;
         uint32_t chosen = kNone;
         Classification cls[2];
-        for (uint32_t i = 0; i < nc && chosen == kNone; ++i) {
-            cls[i] = classify(cand[idx[i]], t, region);
-            if (cls[i].kind == Kind::Safe) chosen = i;
-            if (!opt_.greedy) break;  // paper without greedy turns: the preferred neighbour only
+        for (uint32_t i = 0; i < considered; ++i) {
+            cls[i] = classify_local(cand[idx[i]], t, region);
+            if (cls[i].kind == Kind::Safe && chosen == kNone) chosen = i;
+        }
+        // Two undecided candidates: search both with a growing budget, so a quick answer for
+        // one is not preceded by a long search of the other (a bridge search not taken is
+        // wasted work that no amortisation pays for).
+        for (size_t budget = 64; chosen == kNone; budget *= 4) {
+            bool undecided = false;
+            for (uint32_t i = 0; i < considered && chosen == kNone; ++i) {
+                if (cls[i].kind != Kind::Unknown) continue;
+                if (!resolve(cls[i], cand[idx[i]], region, budget)) undecided = true;
+                else if (cls[i].kind == Kind::Safe) chosen = i;
+            }
+            if (!undecided) break;
         }
         if (chosen != kNone) {
             const uint32_t n = cand[idx[chosen]];
@@ -391,11 +434,10 @@ void Builder::grow(uint32_t cursor, uint32_t region, uint32_t dest) {
         }
         // Every candidate considered is a bridge: take the first anyway, continue into one island
         // and defer the other (relabelled, so R stays connected: invariant G).
-        // side_ holds the islands of the candidate classified last: take that one.
-        const uint32_t last = opt_.greedy ? nc - 1 : 0;
-        const uint32_t n = cand[idx[last]];
-        last_turn_ = turn[idx[last]];
-        region = take_bridge(t, n, region, dest, cls[last]);
+        const uint32_t n = cand[idx[0]];
+        last_turn_ = turn[idx[0]];
+        resolve(cls[0], n, region);
+        region = take_bridge(t, n, region, dest, cls[0]);
         t = n;
     }
 }
@@ -496,13 +538,16 @@ void Builder::absorb(uint32_t record) {
 
 // Zero-cost splice: if two consecutive strip faces x -> y touch the region at faces r1 (beside x)
 // and r2 (beside y), with r1 != r2 unless the region is that single face, the region's own
-// strip r1 ... r2 goes between them and no split is needed. O(region size).
+// strip r1 ... r2 goes between them and no split is needed. O(min(region size, kScanLimit)).
 bool Builder::try_detour(uint32_t region, uint32_t anchor) {
+    // Only the part of the region near its anchor is examined (a large region deferred again and
+    // again inside nested splices would otherwise be scanned each time: quadratic).
+    constexpr size_t kScanLimit = 1024;
     scratch_.clear();
     scratch_.push_back(anchor);
     stamp_base_ += 2;
     stamp_[anchor] = stamp_base_;
-    for (size_t i = 0; i < scratch_.size(); ++i) {
+    for (size_t i = 0; i < scratch_.size() && scratch_.size() < kScanLimit; ++i) {
         const uint32_t f = scratch_[i];
         for (uint32_t k = 0; k < 3; ++k) {
             const uint32_t g = open_neighbor(3 * f + k, region);
@@ -512,7 +557,7 @@ bool Builder::try_detour(uint32_t region, uint32_t anchor) {
             }
         }
     }
-    const bool single = scratch_.size() == 1;
+    const bool single = region_size_[region] == 1;
     for (const uint32_t r1 : scratch_) {
         for (uint32_t k = 0; k < 3; ++k) {
             const uint32_t h = 3 * r1 + k;
