@@ -31,22 +31,31 @@ Mesh Mesh::from_soup(const TriangleSoup& soup) {
         if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2])
             throw InputError("face " + std::to_string(f) + " repeats a vertex");
     }
-    // Pair half-edges by sorting on the undirected key (min, max): O(F log F), no hashing.
+    // Pair half-edges: bucket them by their smaller endpoint (counting sort, O(V + F)), then
+    // sort each bucket by the larger endpoint (buckets hold a vertex's few edges).
     const uint32_t nh = static_cast<uint32_t>(3 * nf);
+    const size_t nv = m.points_.size();
+    std::vector<uint32_t> start(nv + 1, 0);
+    for (uint32_t h = 0; h < nh; ++h) ++start[std::min(m.from(h), m.to(h)) + 1];
+    for (size_t v = 0; v < nv; ++v) start[v + 1] += start[v];
     std::vector<uint32_t> order(nh);
-    std::iota(order.begin(), order.end(), 0u);
-    auto key = [&](uint32_t h) {
-        const uint64_t a = m.from(h), b = m.to(h);
-        return a < b ? (a << 32 | b) : (b << 32 | a);
-    };
-    std::sort(order.begin(), order.end(), [&](uint32_t x, uint32_t y) {
-        const uint64_t kx = key(x), ky = key(y);
-        return kx != ky ? kx < ky : x < y;
-    });
+    {
+        std::vector<uint32_t> fill(start.begin(), start.end() - 1);
+        for (uint32_t h = 0; h < nh; ++h) order[fill[std::min(m.from(h), m.to(h))]++] = h;
+    }
+    auto other = [&](uint32_t h) { return std::max(m.from(h), m.to(h)); };
+    for (size_t v = 0; v < nv; ++v) {
+        const auto first = order.begin() + start[v], last = order.begin() + start[v + 1];
+        std::sort(first, last, [&](uint32_t x, uint32_t y) {
+            const uint32_t ox = other(x), oy = other(y);
+            return ox != oy ? ox < oy : x < y;
+        });
+    }
     for (uint32_t i = 0; i < nh;) {
-        uint32_t j = i + 1;
-        while (j < nh && key(order[j]) == key(order[i])) ++j;
         const uint32_t h0 = order[i];
+        const uint32_t lo = std::min(m.from(h0), m.to(h0)), hi = other(h0);
+        uint32_t j = i + 1;
+        while (j < nh && other(order[j]) == hi && std::min(m.from(order[j]), m.to(order[j])) == lo) ++j;
         if (j - i > 2)
             throw InputError("edge (" + std::to_string(m.from(h0)) + ", " + std::to_string(m.to(h0)) + ") has " +
                              std::to_string(j - i) + " faces (non-manifold edge)");

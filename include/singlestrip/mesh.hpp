@@ -17,7 +17,8 @@
 //      boundary half-edges)
 //   I6 face_parent_[f] < num_input_faces_
 //
-// Complexity: construction O(F log F); split O(1); topology queries O(V + F).
+// Complexity: construction O(V + F) plus sorting each vertex's few edges; split O(1);
+// topology queries O(V + F).
 #pragma once
 
 #include <cstddef>
@@ -50,7 +51,7 @@ public:
     ///      to get precise diagnostics.
     /// \throw InputError if a face repeats a vertex, an edge has more than two faces, two faces
     ///        traverse an edge in the same direction, or a vertex is non-manifold.
-    /// Complexity O(F log F).
+    /// Complexity O(V + F) (half-edges bucketed by vertex).
     static Mesh from_soup(const TriangleSoup& soup);
 
     // --- sizes ---
