@@ -5,8 +5,10 @@
 
 #include <algorithm>
 #include <cctype>
+#include <charconv>
 #include <cerrno>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -14,6 +16,7 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "singlestrip/errors.hpp"
@@ -46,10 +49,15 @@ std::string lower_extension(const std::string& path) {
 [[noreturn]] void fail(const std::string& path, const std::string& what) { throw InputError(path + ": " + what); }
 
 std::string read_all(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
+    std::ifstream in(path, std::ios::binary | std::ios::ate);
+    if (!in) return {};
+    const auto size = in.tellg();
+    if (size <= 0) return {};
+    std::string data(static_cast<std::size_t>(size), '\0');
+    in.seekg(0);
+    in.read(data.data(), size);
+    data.resize(static_cast<std::size_t>(in.gcount()));
+    return data;
 }
 
 /// Whitespace-split tokens of one line, '#' comments removed.
@@ -287,6 +295,434 @@ std::optional<std::string> diagnose_stl(const std::string& path) {
     return std::nullopt;
 }
 
+// --- pre-scan, run on the file's bytes BEFORE CGAL ------------------------------------------
+//
+// CGAL's readers resize their arrays to counts read from the file before reading the data (OFF
+// header counts, an OFF face's corner count, a PLY list count), crash on a PLY 'property' before
+// any 'element', and loop forever over a PLY element without properties. The pre-scan follows
+// CGAL's own tokenisation closely enough to refuse those files first; it never refuses a file
+// CGAL would read into a soup that read_mesh_file accepts. It allocates nothing proportional to
+// declared counts and runs in O(file size) (the ASCII PLY walk only when a list has a 32-bit count).
+
+struct Refusal {
+    std::string what;
+    bool prefer_diagnosis = false;  // a diagnose_* message, when it finds one, is more familiar
+};
+
+bool is_ws(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v'; }
+
+/// 1-based line number of byte `pos` (only computed for messages).
+std::size_t line_of(std::string_view d, std::size_t pos) {
+    return 1 + static_cast<std::size_t>(std::count(d.begin(), d.begin() + static_cast<std::ptrdiff_t>(std::min(pos, d.size())), '\n'));
+}
+
+std::size_t end_of_line(std::string_view d, std::size_t p) {
+    if (p >= d.size()) return d.size();
+    const void* nl = std::memchr(d.data() + p, '\n', d.size() - p);
+    return nl ? static_cast<std::size_t>(static_cast<const char*>(nl) - d.data()) : d.size();
+}
+
+/// A whole token that is a non-negative decimal integer (optional '+'), below 10^18.
+bool clean_unsigned(std::string_view t, unsigned long long& v) {
+    if (!t.empty() && t[0] == '+') t.remove_prefix(1);
+    if (t.empty() || t.size() > 18) return false;
+    v = 0;
+    for (char c : t) {
+        if (c < '0' || c > '9') return false;
+        v = v * 10 + static_cast<unsigned>(c - '0');
+    }
+    return true;
+}
+
+/// A whole token that is a decimal integer (optional sign), |v| < 10^18.
+bool clean_signed(std::string_view t, long long& v) {
+    bool neg = false;
+    if (!t.empty() && (t[0] == '-' || t[0] == '+')) {
+        neg = t[0] == '-';
+        t.remove_prefix(1);
+        if (!t.empty() && (t[0] == '-' || t[0] == '+')) return false;
+    }
+    unsigned long long u = 0;
+    if (!clean_unsigned(t, u)) return false;
+    v = neg ? -static_cast<long long>(u) : static_cast<long long>(u);
+    return true;
+}
+
+/// A whole token that is a number (what `istream >> double` reads as ONE number, or fails on).
+bool clean_double(std::string_view t, double& v) {
+    if (!t.empty() && t[0] == '+') t.remove_prefix(1);
+    if (t.empty() || t[0] == '+') return false;
+    const auto r = std::from_chars(t.data(), t.data() + t.size(), v);
+    return r.ec == std::errc() && r.ptr == t.data() + t.size();
+}
+
+/// A non-negative integral index (or corner count) written as an integer or an integral double.
+bool clean_index(std::string_view t, unsigned long long& v) {
+    if (clean_unsigned(t, v)) return true;
+    double x = 0;
+    if (!clean_double(t, x) || !std::isfinite(x) || x < 0 || x >= 9.0e18 || std::floor(x) != x) return false;
+    v = static_cast<unsigned long long>(x);
+    return true;
+}
+
+/// Next whitespace-separated token in [p, end); empty at the end.
+std::string_view next_token(std::string_view d, std::size_t& p, std::size_t end) {
+    while (p < end && is_ws(d[p])) ++p;
+    const std::size_t b = p;
+    while (p < end && !is_ws(d[p])) ++p;
+    return d.substr(b, p - b);
+}
+
+// ---- OFF ----
+
+std::optional<Refusal> prescan_off(std::string_view d) {
+    const std::size_t n = d.size();
+    std::size_t p = 0;
+    // CGAL's skip_comment_OFF: whitespace and lines starting with '#'.
+    auto skip_comment = [&] {
+        for (;;) {
+            while (p < n && is_ws(d[p])) ++p;
+            if (p < n && d[p] == '#') p = end_of_line(d, p) + 1;
+            else break;
+        }
+        p = std::min(p, n);
+    };
+    // `in >> int` (whitespace only, no comments); false where CGAL's stream fails.
+    auto read_int = [&](long long& v) {
+        while (p < n && is_ws(d[p])) ++p;
+        const std::size_t b = p;
+        if (p < n && (d[p] == '-' || d[p] == '+')) ++p;
+        while (p < n && d[p] >= '0' && d[p] <= '9') ++p;
+        if (!clean_signed(d.substr(b, p - b), v)) return false;
+        return v >= -2147483648LL && v <= 2147483647LL;
+    };
+    skip_comment();
+    if (p >= n) return std::nullopt;
+    // Keyword: one character, then alphanumerics; the character ending it is consumed (in.get).
+    const std::size_t k0 = p++;
+    while (p < n && p - k0 < 41 && std::isalnum(static_cast<unsigned char>(d[p]))) ++p;
+    const std::string_view kw = d.substr(k0, p - k0);
+    if (p < n) ++p;
+    std::size_t j = 0;
+    const bool textures = kw.substr(0, 2) == "ST";
+    if (textures) j += 2;
+    const bool colours = j < kw.size() && kw[j] == 'C';
+    if (colours) ++j;
+    const bool normals = j < kw.size() && kw[j] == 'N';
+    if (normals) ++j;
+    const bool homogeneous = j < kw.size() && kw[j] == '4';
+    if (homogeneous) ++j;
+    const bool dimensional = j < kw.size() && kw[j] == 'n';
+    if (dimensional) ++j;
+    const bool off = kw.substr(j) == "OFF";
+    if (!off && kw.substr(j) != "SKEL") return std::nullopt;  // CGAL refuses the header itself
+    (void)colours;
+
+    skip_comment();
+    if (p >= n) return std::nullopt;
+    long long nv = 0, nf = 0, nh = 0;
+    if (d[p] >= '0' && d[p] <= '9') {
+        if (!read_int(nv)) return std::nullopt;
+        if (dimensional && !read_int(nv)) return std::nullopt;
+        if (!read_int(nf) || nf < 0) return std::nullopt;
+        if (off && !read_int(nh)) return std::nullopt;
+    } else {
+        const std::size_t b = p++;
+        while (p < n && p - b < 41 && std::isalnum(static_cast<unsigned char>(d[p]))) ++p;
+        if (d.substr(b, p - b) != "BINARY") return std::nullopt;
+        if (p < n && d[p++] != '\n') p = end_of_line(d, p) + 1;
+        auto be32 = [&](long long& v) {
+            if (n < 4 || p > n - 4) return false;
+            const auto* u = reinterpret_cast<const unsigned char*>(d.data() + p);
+            v = static_cast<int32_t>(static_cast<uint32_t>(u[0]) << 24 | static_cast<uint32_t>(u[1]) << 16 | static_cast<uint32_t>(u[2]) << 8 | u[3]);
+            p += 4;
+            return true;
+        };
+        if (dimensional && !be32(nv)) return std::nullopt;
+        if (!be32(nv) || !be32(nf) || nf < 0) return std::nullopt;
+        if (off && !be32(nh)) return std::nullopt;
+        if (nv < 0) return Refusal{"malformed OFF header: negative vertex count " + std::to_string(nv), false};
+        (void)nh;
+        // Binary: a vertex is at least 3 floats, a face at least 4 ints.
+        const std::size_t left = n - std::min(p, n);
+        if (static_cast<std::size_t>(nv) * 12 + static_cast<std::size_t>(nf) * 16 > left)
+            return Refusal{"truncated binary OFF file: the header declares " + std::to_string(nv) + " vertices and " + std::to_string(nf) +
+                               " faces, which need at least " + std::to_string(nv * 12 + nf * 16) + " bytes, but only " + std::to_string(left) +
+                               " follow the header",
+                           false};
+        // Faces can be located only when CGAL reads a fixed vertex record (N and ST add data
+        // whose layout this scan does not model; those variants keep only the bound above).
+        if (normals || textures) return std::nullopt;
+        const std::size_t vertex_bytes = static_cast<std::size_t>(nv) * (homogeneous ? 16 : 12);
+        if (p > n || vertex_bytes > n - p)
+            return Refusal{"truncated binary OFF file: the header declares " + std::to_string(nv) + " vertices but the file ends before them", false};
+        p += vertex_bytes;
+        for (long long f = 0; f < nf; ++f) {
+            long long k = 0;
+            if (!be32(k)) return Refusal{"truncated binary OFF file: the header declares " + std::to_string(nf) + " faces but only " + std::to_string(f) + " were found", false};
+            if (k < 3) return Refusal{"face " + std::to_string(f) + " has only " + std::to_string(k) + " vertices (at least 3 needed)", false};
+            if (static_cast<unsigned long long>(k) > (n - p) / 4)
+                return Refusal{"face " + std::to_string(f) + " declares " + std::to_string(k) + " vertices but only " + std::to_string((n - p) / 4) +
+                                   " indices fit in the rest of the file",
+                               false};
+            p += static_cast<std::size_t>(k) * 4;
+        }
+        return std::nullopt;
+    }
+    if (nv < 0) return Refusal{"malformed OFF header: negative vertex count " + std::to_string(nv), true};
+
+    // ASCII: a vertex line holds >= 3 numbers ("0 0 0\n", 6 bytes), an acceptable face >= 4
+    // ("3 0 1 2\n", 8 bytes); the last line may lack its newline.
+    if (6 * static_cast<unsigned long long>(nv) + 8 * static_cast<unsigned long long>(nf) > n + 1)
+        return Refusal{"truncated OFF file: the header declares " + std::to_string(nv) + " vertices and " + std::to_string(nf) +
+                           " faces, which need at least " + std::to_string(6 * nv + 8 * nf) + " bytes, but the file has only " + std::to_string(n),
+                       true};
+    // CGAL reads one vertex per line, then one face per line (comment lines and blank lines skipped).
+    for (long long v = 0; v < nv; ++v) {
+        skip_comment();
+        if (p >= n)
+            return Refusal{"truncated OFF file: header declares " + std::to_string(nv) + " vertices but only " + std::to_string(v) + " were found", true};
+        p = end_of_line(d, p) + 1;
+    }
+    for (long long f = 0; f < nf; ++f) {
+        skip_comment();
+        if (p >= n)
+            return Refusal{"truncated OFF file: header declares " + std::to_string(nf) + " faces but only " + std::to_string(f) + " were found", true};
+        const std::size_t line_start = p;
+        std::size_t end = end_of_line(d, p);
+        const std::size_t next = end + 1;
+        if (const void* hash = std::memchr(d.data() + p, '#', end - p)) end = static_cast<std::size_t>(static_cast<const char*>(hash) - d.data());
+        auto where = [&] { return "line " + std::to_string(line_of(d, line_start)) + ": face " + std::to_string(f); };
+        const std::string_view first = next_token(d, p, end);
+        unsigned long long k = 0;
+        if (!clean_index(first, k)) return Refusal{where() + ": bad vertex count '" + std::string(first) + "'", true};
+        if (k < 3) return Refusal{where() + " has only " + std::to_string(k) + " vertices (at least 3 needed)", true};
+        for (unsigned long long i = 0; i < k; ++i) {
+            const std::string_view t = next_token(d, p, end);
+            if (t.empty())
+                return Refusal{where() + " declares " + std::to_string(k) + " vertices but lists " + std::to_string(i), true};
+            unsigned long long idx = 0;
+            if (!clean_index(t, idx)) return Refusal{where() + ": bad vertex index '" + std::string(t) + "'", true};
+            if (idx >= static_cast<unsigned long long>(nv))
+                return Refusal{"line " + std::to_string(line_of(d, line_start)) + ": " + index_problem(static_cast<std::size_t>(f), static_cast<long long>(idx), static_cast<std::size_t>(nv)), true};
+        }
+        p = next;
+    }
+    return std::nullopt;
+}
+
+// ---- PLY ----
+
+struct PlyProperty {
+    std::string name;
+    std::size_t size = 0;        // scalar size, or the list's entry size
+    std::size_t count_size = 0;  // 0 for a scalar
+    bool count_signed = false;
+    bool integral = true;  // of the scalar / list entries
+};
+
+struct PlyElement {
+    std::string name;
+    unsigned long long count = 0;
+    std::size_t header_line = 0;
+    std::vector<PlyProperty> props;  // only those CGAL reads (it ignores unknown types)
+};
+
+/// Size of a PLY scalar type as CGAL knows it (0: unknown, CGAL skips the property).
+std::size_t ply_scalar(const std::string& t, bool& is_signed, bool& integral) {
+    is_signed = t == "char" || t == "int8" || t == "short" || t == "int16" || t == "int" || t == "int32";
+    integral = !(t == "float" || t == "float32" || t == "double" || t == "float64");
+    return ply_type_size(t);
+}
+
+std::optional<Refusal> prescan_ply(std::string_view d) {
+    const std::size_t n = d.size();
+    std::size_t p = 0, lineno = 0;
+    int format = -1;  // 0 ascii, 1 little endian, 2 big endian
+    std::vector<PlyElement> elements;
+    bool end_header = false;
+    while (p < n) {
+        const std::size_t end = end_of_line(d, p);
+        const std::size_t line = p;
+        p = end + 1;
+        ++lineno;
+        std::size_t q = line;
+        std::vector<std::string> t;
+        for (std::string_view tok; !(tok = next_token(d, q, end)).empty() && t.size() < 6;) t.emplace_back(tok);
+        if (lineno == 1) {
+            if (t.empty() || t[0] != "ply") return std::nullopt;  // CGAL refuses; diagnosed after
+            continue;
+        }
+        if (lineno == 2) {
+            if (t.size() < 3) return std::nullopt;
+            if (t[1] == "ascii") format = 0;
+            else if (t[1] == "binary_little_endian") format = 1;
+            else if (t[1] == "binary_big_endian") format = 2;
+            else return std::nullopt;
+            continue;
+        }
+        if (t.empty()) return std::nullopt;  // CGAL's header parser stops with an error
+        const std::string where = "malformed PLY header: line " + std::to_string(lineno) + ": ";
+        if (t[0] == "property") {
+            if (t.size() < 3) return std::nullopt;
+            if (elements.empty()) return Refusal{where + "'property' before any 'element'", false};
+            PlyProperty prop;
+            bool sgn = false, integral = true;
+            if (t[1] == "list") {
+                if (t.size() < 5) return std::nullopt;
+                prop.name = t[4];
+                bool count_integral = true;
+                prop.count_size = ply_scalar(t[2], prop.count_signed, count_integral);
+                prop.size = ply_scalar(t[3], sgn, integral);
+                prop.integral = integral;
+                // CGAL knows integer count types only.
+                if (!count_integral || prop.count_size == 0 || prop.size == 0) continue;
+            } else {
+                prop.name = t[2];
+                prop.size = ply_scalar(t[1], sgn, integral);
+                prop.integral = integral;
+                if (prop.size == 0) continue;
+            }
+            elements.back().props.push_back(prop);
+        } else if (t[0] == "element") {
+            if (t.size() < 3) return std::nullopt;
+            // `istream >> size_t`: leading digits; a sign or overflow makes CGAL fail or wrap.
+            std::size_t q2 = 0;
+            const std::string& c = t[2];
+            if (c[0] == '+') q2 = 1;
+            std::size_t e = q2;
+            while (e < c.size() && c[e] >= '0' && c[e] <= '9') ++e;
+            unsigned long long count = 0;
+            if (c[0] == '-' || !clean_unsigned(std::string_view(c).substr(q2, e - q2), count))
+                return Refusal{where + "bad count '" + c + "' for element '" + t[1] + "'", false};
+            elements.push_back({t[1], count, lineno, {}});
+        } else if (t[0] == "end_header") {
+            end_header = true;
+            break;
+        }
+    }
+    if (format < 0) return std::nullopt;
+    for (const auto& e : elements)
+        if (e.count > 0 && e.props.empty())
+            return Refusal{"malformed PLY header: line " + std::to_string(e.header_line) + ": element '" + e.name + "' declares " + std::to_string(e.count) +
+                               " items but has no properties of a known type",
+                           false};
+    const std::size_t body = end_header ? std::min(p, n) : n;
+    const std::size_t have = n - body;
+    auto truncated = [&](const PlyElement& e, unsigned long long i) {
+        return Refusal{"truncated PLY file: element '" + e.name + "' declares " + std::to_string(e.count) + " items but the data ends at item " + std::to_string(i), true};
+    };
+    if (format == 0) {
+        // Every property of every item is at least one token of >= 1 byte plus a separator.
+        unsigned long long tokens = 0;
+        for (const auto& e : elements) {
+            if (e.count > have + 1 || (tokens += e.count * e.props.size()) > (have + 1) / 2)
+                return Refusal{"truncated PLY file: the header declares more element data than the " + std::to_string(have) + " bytes after 'end_header' can hold", true};
+        }
+        // A list with a 32-bit count could make CGAL allocate up to 32 GB: walk the body the way
+        // CGAL reads it (whitespace-separated numbers). Smaller count types are harmless.
+        bool wide = false;
+        for (const auto& e : elements)
+            for (const auto& pr : e.props) wide = wide || pr.count_size == 4;
+        if (!wide) return std::nullopt;
+        std::size_t q = body;
+        for (const auto& e : elements) {
+            for (unsigned long long i = 0; i < e.count; ++i) {
+                for (const auto& pr : e.props) {
+                    auto bad = [&](std::string_view tok, const std::string& what) {
+                        return Refusal{"line " + std::to_string(line_of(d, q)) + ": element '" + e.name + "' item " + std::to_string(i) + ": " + what +
+                                           " '" + std::string(tok.substr(0, 40)) + "'",
+                                       false};
+                    };
+                    auto number_ok = [&](std::string_view tok, bool integral) {
+                        long long iv = 0;
+                        double dv = 0;
+                        return integral ? clean_signed(tok, iv) : clean_double(tok, dv);
+                    };
+                    std::string_view tok = next_token(d, q, n);
+                    if (tok.empty()) return truncated(e, i);
+                    if (pr.count_size == 0) {
+                        if (!number_ok(tok, pr.integral)) return bad(tok, "cannot parse property '" + pr.name + "'");
+                        continue;
+                    }
+                    long long c = 0;
+                    if (!clean_signed(tok, c) || c < 0) return bad(tok, "bad count for list '" + pr.name + "'");
+                    if (static_cast<unsigned long long>(c) > (n - q) / 2 + 1) {
+                        Refusal r = bad(tok, "list '" + pr.name + "' declares more entries than the rest of the file can hold:");
+                        r.what = "truncated PLY file: " + r.what;
+                        r.prefer_diagnosis = true;
+                        return r;
+                    }
+                    for (long long k = 0; k < c; ++k) {
+                        tok = next_token(d, q, n);
+                        if (tok.empty()) return truncated(e, i);
+                        if (!number_ok(tok, pr.integral)) return bad(tok, "cannot parse an entry of list '" + pr.name + "'");
+                    }
+                }
+            }
+        }
+        return std::nullopt;
+    }
+    // Binary: walk the records (O(items) only for elements with lists).
+    std::size_t q = body;
+    for (const auto& e : elements) {
+        if (e.count == 0) continue;
+        bool has_list = false;
+        std::size_t fixed = 0;
+        for (const auto& pr : e.props) {
+            has_list = has_list || pr.count_size != 0;
+            fixed += pr.count_size ? pr.count_size : pr.size;
+        }
+        if (!has_list) {
+            if (e.count > (n - q) / fixed) return truncated(e, (n - q) / fixed);
+            q += static_cast<std::size_t>(e.count) * fixed;
+            continue;
+        }
+        for (unsigned long long i = 0; i < e.count; ++i) {
+            for (const auto& pr : e.props) {
+                if (pr.count_size == 0) {
+                    if (n - q < pr.size) return truncated(e, i);
+                    q += pr.size;
+                    continue;
+                }
+                if (n - q < pr.count_size) return truncated(e, i);
+                unsigned char b[4] = {0, 0, 0, 0};
+                for (std::size_t k = 0; k < pr.count_size; ++k)
+                    b[format == 1 ? k : pr.count_size - 1 - k] = static_cast<unsigned char>(d[q + k]);
+                q += pr.count_size;
+                uint64_t c = 0;
+                for (std::size_t k = pr.count_size; k-- > 0;) c = c << 8 | b[k];
+                const bool negative = pr.count_signed && (b[pr.count_size - 1] & 0x80);
+                if (negative || c > (n - q) / pr.size)
+                    return Refusal{std::string(negative ? "corrupt" : "truncated") + " PLY file: element '" + e.name + "' item " + std::to_string(i) +
+                                       ": list '" + pr.name + "' declares " + (negative ? std::string("a negative number of") : std::to_string(c)) +
+                                       " entries but only " + std::to_string((n - q) / pr.size) + " fit in the rest of the file",
+                                   !negative};
+                q += static_cast<std::size_t>(c) * pr.size;
+            }
+        }
+    }
+    return std::nullopt;
+}
+
+// ---- STL ----
+
+std::optional<Refusal> prescan_stl(std::string_view d) {
+    // CGAL reads a file as binary unless its first word is "solid" followed by a separator.
+    std::size_t p = 0;
+    while (p < d.size() && std::isspace(static_cast<unsigned char>(d[p]))) ++p;
+    if (d.size() - p >= 6 && d.substr(p, 5) == "solid" && (d[p + 5] == '\n' || d[p + 5] == '\r' || d[p + 5] == ' ')) return std::nullopt;
+    if (d.size() < 84) return std::nullopt;  // CGAL fails at once; diagnosed after
+    uint32_t count = 0;
+    std::memcpy(&count, d.data() + 80, 4);
+    if (84 + 50 * static_cast<std::size_t>(count) <= d.size()) return std::nullopt;
+    // CGAL then retries the file as ASCII, which needs facets.
+    if (d.find("facet") != std::string_view::npos) return std::nullopt;
+    return Refusal{"truncated binary STL file: the header declares " + std::to_string(count) + " triangles (" +
+                       std::to_string(84 + 50 * static_cast<std::size_t>(count)) + " bytes) but the file has " + std::to_string(d.size()) + " bytes",
+                   true};
+}
+
 }  // namespace
 
 TriangleSoup read_mesh_file(const std::string& path) {
@@ -314,6 +750,33 @@ TriangleSoup read_mesh_file(const std::string& path) {
                 break;
             }
         if (!any_content) fail(path, "empty file");
+    }
+
+    // CGAL trusts declared counts (it resizes to them before reading) and crashes or hangs on some
+    // malformed PLY headers: refuse those files from the bytes before CGAL sees them.
+    {
+        const std::string data = read_all(path);
+        std::optional<Refusal> refusal;
+        switch (fmt) {
+            case InFormat::Off: refusal = prescan_off(data); break;
+            case InFormat::Ply: refusal = prescan_ply(data); break;
+            case InFormat::Stl: refusal = prescan_stl(data); break;
+            case InFormat::Obj: break;  // CGAL's OBJ reader grows its arrays line by line
+        }
+        if (refusal) {
+            std::optional<std::string> why;
+            // The line-based diagnosers give the messages users already know (truncation, face
+            // sizes, indices); they allocate nothing proportional to declared counts.
+            if (refusal->prefer_diagnosis) {
+                switch (fmt) {
+                    case InFormat::Off: why = diagnose_off(path); break;
+                    case InFormat::Ply: why = diagnose_ply(path); break;
+                    case InFormat::Stl: why = diagnose_stl(path); break;
+                    case InFormat::Obj: break;
+                }
+            }
+            fail(path, why ? *why : refusal->what);
+        }
     }
 
     std::vector<CgalPoint> points;

@@ -1,0 +1,291 @@
+// Resource limits of read_mesh_file (issue 7, point 4): files whose declared counts are absurd for
+// their size must be refused with InputError (naming the file) BEFORE CGAL allocates for them or
+// loops over them. Each case runs in a forked child whose address space is capped at 512 MiB
+// (RLIMIT_AS), so an attempted huge allocation shows up as a failure (bad_alloc or a kill), not as
+// a pass; alarm() there is a hang guard only, not a timing assertion. Valid variants of the same
+// formats (binary OFF, big-endian PLY, 32-bit list counts, colours, comments) must still be read.
+#include <gtest/gtest.h>
+
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "singlestrip/errors.hpp"
+#include "singlestrip/io.hpp"
+
+#if defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define SINGLESTRIP_TEST_ASAN 1
+#endif
+#endif
+#if defined(__SANITIZE_ADDRESS__)
+#define SINGLESTRIP_TEST_ASAN 1
+#endif
+
+using namespace singlestrip;
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path scratch() {
+    static const fs::path dir = [] {
+        fs::path d = fs::temp_directory_path() / ("singlestrip_read_limits_" + std::to_string(::getpid()));
+        fs::create_directories(d);
+        return d;
+    }();
+    return dir;
+}
+
+std::string write_file(const std::string& bytes, const std::string& ext) {
+    static int counter = 0;
+    const fs::path p = scratch() / ("case" + std::to_string(counter++) + ext);
+    std::ofstream(p, std::ios::binary).write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    return p.string();
+}
+
+/// Reads `bytes` (as a file with extension `ext`) in a forked child limited to 512 MiB of address
+/// space. Returns "" when read_mesh_file threw InputError whose message starts with the path and
+/// contains every needle; otherwise what happened.
+std::string refused(const std::string& bytes, const std::string& ext, const std::vector<std::string>& needles = {}) {
+    const std::string path = write_file(bytes, ext);
+    const fs::path msg_file = path + ".msg";
+    std::fflush(nullptr);
+    const pid_t pid = fork();
+    if (pid == 0) {
+#ifndef SINGLESTRIP_TEST_ASAN
+        const rlimit lim{rlim_t{512} << 20, rlim_t{512} << 20};
+        setrlimit(RLIMIT_AS, &lim);
+#endif
+        alarm(120);  // hang guard only
+        int code = 0;
+        try {
+            (void)read_mesh_file(path);
+            code = 10;
+        } catch (const InputError& e) {
+            std::ofstream(msg_file) << e.what();
+            code = 0;
+        } catch (const std::bad_alloc&) {
+            code = 11;
+        } catch (...) {
+            code = 12;
+        }
+        _exit(code);
+    }
+    int st = 0;
+    waitpid(pid, &st, 0);
+    if (WIFSIGNALED(st)) return WTERMSIG(st) == SIGALRM ? "hang (killed after 120 s)" : "killed by signal " + std::to_string(WTERMSIG(st));
+    switch (WEXITSTATUS(st)) {
+        case 0: break;
+        case 10: return "accepted";
+        case 11: return "bad_alloc (tried to allocate beyond 512 MiB)";
+        case 12: return "threw something other than InputError";
+        default: return "child exit " + std::to_string(WEXITSTATUS(st));
+    }
+    std::ifstream in(msg_file);
+    const std::string msg((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (msg.rfind(path + ": ", 0) != 0) return "message does not start with the path: " + msg;
+    for (const auto& n : needles)
+        if (msg.find(n) == std::string::npos) return "message lacks '" + n + "': " + msg;
+    return {};
+}
+
+/// Reads `bytes` in-process (they are small and valid) and returns the number of triangles.
+size_t triangles_of(const std::string& bytes, const std::string& ext) { return read_mesh_file(write_file(bytes, ext)).triangles.size(); }
+
+std::string ply_header(const std::string& format, const std::string& nv, const std::string& nf, const std::string& list = "uchar int") {
+    return "ply\nformat " + format + " 1.0\nelement vertex " + nv + "\nproperty float x\nproperty float y\nproperty float z\nelement face " + nf +
+           "\nproperty list " + list + " vertex_indices\nend_header\n";
+}
+
+template <class T>
+void append(std::string& s, T v) {
+    s.append(reinterpret_cast<const char*>(&v), sizeof v);  // little-endian host (x86-64, aarch64)
+}
+
+void append_be32(std::string& s, uint32_t v) {
+    for (int k = 3; k >= 0; --k) s.push_back(static_cast<char>(v >> (8 * k) & 0xff));
+}
+
+std::string binary_stl(uint32_t declared, size_t real) {
+    std::string s(80, '\0');
+    append(s, declared);
+    s.append(50 * real, '\0');
+    return s;
+}
+
+const std::string kTriangleOff = "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n";
+
+}  // namespace
+
+// ---- OFF ---------------------------------------------------------------------------------------
+
+TEST(ReadLimits, OffHeaderCountsAreBoundedByTheFileSize) {
+    EXPECT_EQ(refused("OFF\n100000000 100000000 0\n", ".off", {"100000000"}), "");
+    EXPECT_EQ(refused("OFF\n3 100000000 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", ".off", {"truncated OFF", "100000000 faces"}), "");
+    EXPECT_EQ(refused("OFF\n2000000000 1 0\n", ".off"), "");
+    EXPECT_EQ(refused("OFF\n1000000000000 1 0\n", ".off"), "");  // overflows CGAL's int
+    EXPECT_EQ(refused("# comment\nOFF # more\n# and more\n100000000 1 0\n", ".off"), "");
+}
+
+TEST(ReadLimits, OffFaceCornerCountIsBoundedByItsLine) {
+    EXPECT_EQ(refused(kTriangleOff + "300000000 0 1 2\n", ".off", {"face 0", "300000000"}), "");
+    EXPECT_EQ(refused(kTriangleOff + "2147483647 0 1 2\n", ".off", {"face 0"}), "");
+    EXPECT_EQ(refused(kTriangleOff + "1e14 0 1 2\n", ".off", {"face 0"}), "");
+    EXPECT_EQ(refused(kTriangleOff + "-3 0 1 2\n", ".off", {"face 0", "-3"}), "");
+    EXPECT_EQ(refused(kTriangleOff + "nan 0 1 2\n", ".off", {"face 0"}), "");
+    EXPECT_EQ(refused(kTriangleOff + "3 0 1 # 2 hidden by a comment\n", ".off", {"face 0", "declares 3 vertices but lists 2"}), "");
+    // Negative and non-integral indices (CGAL casts a negative double to size_t: undefined).
+    EXPECT_EQ(refused(kTriangleOff + "3 0 -1 2\n", ".off", {"face 0", "-1"}), "");
+    EXPECT_EQ(refused(kTriangleOff + "3 0 1e300 2\n", ".off", {"face 0"}), "");
+}
+
+TEST(ReadLimits, BinaryOffCountsAreBounded) {
+    auto header = [](uint32_t nv, uint32_t nf) {
+        std::string s = "OFF BINARY\n";
+        append_be32(s, nv);
+        append_be32(s, nf);
+        append_be32(s, 0);
+        return s;
+    };
+    EXPECT_EQ(refused(header(100000000, 100000000), ".off", {"binary OFF"}), "");
+    std::string s = header(3, 1);
+    for (float c : {0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f, 0.f}) {
+        uint32_t u;
+        std::memcpy(&u, &c, 4);
+        append_be32(s, u);
+    }
+    std::string ok = s;
+    for (uint32_t v : {3u, 0u, 1u, 2u}) append_be32(ok, v);
+    EXPECT_EQ(triangles_of(ok, ".off"), 1u);  // the valid binary file still reads
+    std::string huge = s;
+    for (uint32_t v : {0x7fffffffu, 0u, 1u, 2u}) append_be32(huge, v);
+    EXPECT_EQ(refused(huge, ".off", {"face 0", "2147483647"}), "");
+    std::string negative = s;
+    for (uint32_t v : {0xffffffffu, 0u, 1u, 2u}) append_be32(negative, v);
+    EXPECT_EQ(refused(negative, ".off", {"face 0"}), "");
+}
+
+TEST(ReadLimits, ValidOffVariantsStillRead) {
+    EXPECT_EQ(triangles_of("# c\nOFF\n# c\n4 2 0\n\n0 0 0\n1 0 0 # c\n1 1 0\n0 1 0\n# c\n3 0 1 2\n\n4 0 2 3 1 # quad\n", ".off"), 3u);
+    EXPECT_EQ(triangles_of("COFF\n3 1 0\n0 0 0 255 0 0 255\n1 0 0 0 255 0 255\n0 1 0 0 0 255 255\n3 0 1 2 128 128 128 255\n", ".off"), 1u);
+    EXPECT_EQ(triangles_of("OFF 3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2", ".off"), 1u);  // no final newline
+    EXPECT_EQ(triangles_of("OFF\r\n3 1 0\r\n0 0 0\r\n1 0 0\r\n0 1 0\r\n3 0 1 2\r\n", ".off"), 1u);
+}
+
+// ---- PLY ---------------------------------------------------------------------------------------
+
+TEST(ReadLimits, PlyAbsurdElementCountsAreRefused) {
+    EXPECT_EQ(refused(ply_header("ascii", "1000000000000", "1"), ".ply"), "");
+    EXPECT_EQ(refused(ply_header("binary_little_endian", "1000000000000", "1"), ".ply"), "");
+    EXPECT_EQ(refused(ply_header("binary_little_endian", "100000000", "100000000") + std::string(64, '\0'), ".ply"), "");
+    EXPECT_EQ(refused(ply_header("binary_big_endian", "3", "100000000") + std::string(36 + 64, '\0'), ".ply"), "");
+    EXPECT_EQ(refused(ply_header("ascii", "-1", "1"), ".ply", {"bad count", "vertex"}), "");
+}
+
+TEST(ReadLimits, PlyElementWithoutPropertiesIsRefusedNotLoopedOver) {
+    EXPECT_EQ(refused("ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                      "element face 1\nproperty list uchar int vertex_indices\nelement foo 1000000000000\nend_header\n"
+                      "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
+                      ".ply", {"element 'foo'", "no properties"}),
+              "");
+    // A property of a type CGAL does not know is skipped by CGAL: the element is still empty.
+    EXPECT_EQ(refused("ply\nformat binary_little_endian 1.0\nelement junk 1000000000000\nproperty quaternion q\nend_header\n", ".ply",
+                      {"element 'junk'", "no properties"}),
+              "");
+}
+
+TEST(ReadLimits, PlyPropertyBeforeElementIsRefusedNotCrashed) {
+    EXPECT_EQ(refused("ply\nformat binary_little_endian 1.0\nproperty float x\nelement vertex 0\nend_header\n", ".ply", {"'property' before any 'element'"}), "");
+    EXPECT_EQ(refused("ply\nformat ascii 1.0\nproperty list uchar int vertex_indices\nend_header\n", ".ply", {"'property' before any 'element'"}), "");
+}
+
+TEST(ReadLimits, BinaryPlyListCountsAreBoundedByTheRemainingBytes) {
+    const float xyz[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+    for (const std::string list : {"uint int", "int int", "uint uint"}) {
+        SCOPED_TRACE(list);
+        std::string s = ply_header("binary_little_endian", "3", "1", list);
+        s.append(reinterpret_cast<const char*>(xyz), sizeof xyz);
+        append(s, uint32_t{0x7fffffffu});
+        s.append(12, '\0');
+        EXPECT_EQ(refused(s, ".ply", {"element 'face'", "list 'vertex_indices'", "2147483647"}), "");
+    }
+    // A negative signed count (CGAL would cast it to size_t).
+    std::string s = ply_header("binary_little_endian", "3", "1", "int int");
+    s.append(reinterpret_cast<const char*>(xyz), sizeof xyz);
+    append(s, int32_t{-1});
+    s.append(12, '\0');
+    EXPECT_EQ(refused(s, ".ply", {"negative"}), "");
+    // Big endian: the count 2^31-1 written most significant byte first.
+    std::string be = ply_header("binary_big_endian", "3", "1", "uint int");
+    be.append(36, '\0');
+    append_be32(be, 0x7fffffffu);
+    be.append(12, '\0');
+    EXPECT_EQ(refused(be, ".ply", {"2147483647"}), "");
+}
+
+TEST(ReadLimits, AsciiPlyWideListCountsAreBounded) {
+    const std::string body = "0 0 0\n1 0 0\n0 1 0\n";
+    EXPECT_EQ(refused(ply_header("ascii", "3", "1", "int int") + body + "2000000000 0 1 2\n", ".ply", {"list 'vertex_indices'", "2000000000"}), "");
+    EXPECT_EQ(refused(ply_header("ascii", "3", "1", "uint int") + body + "4294967295 0 1 2\n", ".ply", {"list 'vertex_indices'"}), "");
+    EXPECT_EQ(refused(ply_header("ascii", "3", "1", "int int") + body + "-5 0 1 2\n", ".ply", {"list 'vertex_indices'"}), "");
+}
+
+TEST(ReadLimits, ValidPlyVariantsStillRead) {
+    const std::string body = "0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n4 0 2 3 1\n";
+    for (const std::string list : {"uchar int", "int int", "uint uint", "ushort int", "char int"}) {
+        SCOPED_TRACE(list);
+        EXPECT_EQ(triangles_of(ply_header("ascii", "4", "2", list) + body, ".ply"), 3u);
+    }
+    // Binary big endian with an extra per-face property after the list, and an extra element.
+    std::string s =
+        "ply\nformat binary_big_endian 1.0\ncomment x\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+        "element face 1\nproperty list uint int vertex_indices\nproperty uchar flags\nelement extra 2\nproperty short a\nend_header\n";
+    s.append(36, '\0');
+    for (uint32_t v : {3u, 0u, 1u, 2u}) append_be32(s, v);
+    s.push_back('\x07');
+    s.append(4, '\0');
+    // Coordinates are all zero here: the soup is degenerate but readable.
+    EXPECT_EQ(triangles_of(s, ".ply"), 1u);
+}
+
+// ---- STL and OBJ -------------------------------------------------------------------------------
+
+TEST(ReadLimits, BinaryStlTriangleCountIsBoundedByTheFileSize) {
+    EXPECT_EQ(refused(binary_stl(1000000000u, 1), ".stl", {"truncated binary STL", "1000000000 triangles"}), "");
+    EXPECT_EQ(refused(binary_stl(0xffffffffu, 0), ".stl", {"truncated binary STL"}), "");
+}
+
+TEST(ReadLimits, ObjHugeFaceLinesAreHarmless) {
+    // CGAL's OBJ reader grows a face as it reads its indices: a long or absurd face line costs
+    // memory proportional to the line only.
+    std::string s = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3 1000000000000\n";
+    EXPECT_EQ(refused(s, ".obj", {"face 0"}), "");
+    std::string longline = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf";
+    for (int i = 0; i < 200000; ++i) longline += " 1 2 3";
+    longline += "\n";
+    EXPECT_EQ(triangles_of(longline, ".obj"), 599998u);
+}
+
+// ---- the fuzz reproducers (fuzz/repro, written by the fuzz work) ---------------------------------
+
+TEST(ReadLimits, FuzzReproducersAreCleanInputErrors) {
+    const fs::path dir = fs::path(SINGLESTRIP_SOURCE_DIR) / "fuzz" / "repro";
+    if (!fs::exists(dir)) GTEST_SKIP() << "no fuzz/repro";
+    for (const char* name : {"off_huge_counts.off", "off_huge_face_corner_count.off", "off_negative_index_ub.off", "ply_element_without_properties_hang.ply",
+                             "ply_huge_list_count.ply", "ply_property_before_element.ply"}) {
+        SCOPED_TRACE(name);
+        const fs::path p = dir / name;
+        if (!fs::exists(p)) continue;
+        std::ifstream in(p, std::ios::binary);
+        const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        EXPECT_EQ(refused(bytes, p.extension().string()), "");
+    }
+}
