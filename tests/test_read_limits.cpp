@@ -207,6 +207,24 @@ TEST(ReadLimits, PlyPropertyBeforeElementIsRefusedNotCrashed) {
     EXPECT_EQ(refused("ply\nformat ascii 1.0\nproperty list uchar int vertex_indices\nend_header\n", ".ply", {"'property' before any 'element'"}), "");
 }
 
+TEST(ReadLimits, PlyPropertyTypesCgalCannotConvertAreRefusedNotCrashed) {
+    // CGAL looks coordinates up as float/double and halfedge ends as uint, through a null pointer
+    // when the file's type differs.
+    EXPECT_EQ(refused("ply\nformat ascii 1.0\nelement vertex 3\nproperty int x\nproperty float y\nproperty float z\nelement face 1\n"
+                      "property list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
+                      ".ply", {"'x'", "int"}),
+              "");
+    EXPECT_EQ(refused("ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty list uchar float z\nelement face 1\n"
+                      "property list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 1 0\n3 0 1 2\n",
+                      ".ply", {"'z'"}),
+              "");
+    EXPECT_EQ(refused("ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\n"
+                      "property list uchar int vertex_indices\nelement halfedge 1\nproperty int source\nproperty int target\nend_header\n"
+                      "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n0 1\n",
+                      ".ply", {"'source'"}),
+              "");
+}
+
 TEST(ReadLimits, BinaryPlyListCountsAreBoundedByTheRemainingBytes) {
     const float xyz[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
     for (const std::string list : {"uint int", "int int", "uint uint"}) {
@@ -266,8 +284,11 @@ TEST(ReadLimits, BinaryStlTriangleCountIsBoundedByTheFileSize) {
 TEST(ReadLimits, ObjHugeFaceLinesAreHarmless) {
     // CGAL's OBJ reader grows a face as it reads its indices: a long or absurd face line costs
     // memory proportional to the line only.
-    std::string s = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3 1000000000000\n";
-    EXPECT_EQ(refused(s, ".obj", {"face 0"}), "");
+    EXPECT_EQ(refused("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3 1000000000000\n", ".obj", {"face 0"}), "");
+    // CGAL would silently end these faces early (unreadable token) or swallow an index (tab).
+    EXPECT_EQ(refused("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3 x 4\n", ".obj", {"face 0", "'x'"}), "");
+    EXPECT_EQ(refused("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\t4\n", ".obj", {"face 0", "separated by spaces"}), "");
+    EXPECT_EQ(triangles_of("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1/1/1  2//2 3 # c\t\nf -1 -2 -3\t\r\n", ".obj"), 2u);
     std::string longline = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf";
     for (int i = 0; i < 200000; ++i) longline += " 1 2 3";
     longline += "\n";
@@ -280,7 +301,7 @@ TEST(ReadLimits, FuzzReproducersAreCleanInputErrors) {
     const fs::path dir = fs::path(SINGLESTRIP_SOURCE_DIR) / "fuzz" / "repro";
     if (!fs::exists(dir)) GTEST_SKIP() << "no fuzz/repro";
     for (const char* name : {"off_huge_counts.off", "off_huge_face_corner_count.off", "off_negative_index_ub.off", "ply_element_without_properties_hang.ply",
-                             "ply_huge_list_count.ply", "ply_property_before_element.ply"}) {
+                             "ply_huge_list_count.ply", "ply_property_before_element.ply", "ply_int_coordinate.ply"}) {
         SCOPED_TRACE(name);
         const fs::path p = dir / name;
         if (!fs::exists(p)) continue;

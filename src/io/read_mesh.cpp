@@ -519,6 +519,7 @@ struct PlyProperty {
     std::size_t count_size = 0;  // 0 for a scalar
     bool count_signed = false;
     bool integral = true;  // of the scalar / list entries
+    std::string type;      // as written (scalar type, or the list's entry type)
 };
 
 struct PlyElement {
@@ -575,12 +576,14 @@ std::optional<Refusal> prescan_ply(std::string_view d) {
                 prop.count_size = ply_scalar(t[2], prop.count_signed, count_integral);
                 prop.size = ply_scalar(t[3], sgn, integral);
                 prop.integral = integral;
+                prop.type = "list " + t[3];
                 // CGAL knows integer count types only.
                 if (!count_integral || prop.count_size == 0 || prop.size == 0) continue;
             } else {
                 prop.name = t[2];
                 prop.size = ply_scalar(t[1], sgn, integral);
                 prop.integral = integral;
+                prop.type = t[1];
                 if (prop.size == 0) continue;
             }
             elements.back().props.push_back(prop);
@@ -607,6 +610,20 @@ std::optional<Refusal> prescan_ply(std::string_view d) {
             return Refusal{"malformed PLY header: line " + std::to_string(e.header_line) + ": element '" + e.name + "' declares " + std::to_string(e.count) +
                                " items but has no properties of a known type",
                            false};
+    // CGAL fetches some properties with a fixed C++ type and dereferences a null pointer when the
+    // file's type differs: vertex coordinates must be float or double, halfedge ends uint.
+    for (const auto& e : elements) {
+        const bool vertex = e.name == "vertex" || e.name == "vertices";
+        for (const auto& pr : e.props) {
+            const bool coord = vertex && (pr.name == "x" || pr.name == "y" || pr.name == "z");
+            const bool end = e.name == "halfedge" && (pr.name == "source" || pr.name == "target");
+            if ((coord && (pr.count_size != 0 || pr.integral)) || (end && pr.count_size == 0 && pr.type != "uint" && pr.type != "uint32") ||
+                (end && pr.count_size != 0))
+                return Refusal{"unsupported PLY file: line " + std::to_string(e.header_line) + ": property '" + pr.name + "' of element '" + e.name +
+                                   "' has type '" + pr.type + "' (" + (coord ? "coordinates must be float or double" : "halfedge ends must be uint") + ")",
+                               false};
+        }
+    }
     const std::size_t body = end_header ? std::min(p, n) : n;
     const std::size_t have = n - body;
     auto truncated = [&](const PlyElement& e, unsigned long long i) {
@@ -705,6 +722,39 @@ std::optional<Refusal> prescan_ply(std::string_view d) {
     return std::nullopt;
 }
 
+// ---- OBJ ----
+
+/// CGAL's OBJ reader grows its arrays line by line (no declared counts), but it reads a face with
+/// `while (iss >> int) { ...; iss.ignore(256, ' '); }`: a token that is not an int (or overflows)
+/// silently ends the face, and a tab after a token swallows the next one. Refuse those faces
+/// instead of reading a different polygon than the file's.
+std::optional<Refusal> prescan_obj(std::string_view d) {
+    const std::size_t n = d.size();
+    std::size_t p = 0, lineno = 0, face = 0;
+    while (p < n) {
+        const std::size_t line = p;
+        std::size_t end = end_of_line(d, p);
+        p = end + 1;
+        ++lineno;
+        std::size_t q = line;
+        if (next_token(d, q, end) != "f") continue;
+        if (const void* hash = std::memchr(d.data() + q, '#', end - q)) end = static_cast<std::size_t>(static_cast<const char*>(hash) - d.data());
+        for (std::string_view t; !(t = next_token(d, q, end)).empty();) {
+            auto where = [&] { return "line " + std::to_string(lineno) + ": face " + std::to_string(face) + ": "; };
+            const std::string_view head = t.substr(0, t.find('/'));
+            long long v = 0;
+            if (!clean_signed(head, v) || v == 0 || v < -2147483648LL || v > 2147483647LL)
+                return Refusal{where() + "bad vertex index '" + std::string(t.substr(0, 40)) + "'", false};
+            const std::string_view rest = d.substr(q, end - q);
+            const bool last = rest.find_first_not_of(" \t\r\f\v") == std::string_view::npos;
+            if (!last && (d[q] != ' ' || t.size() > 250))
+                return Refusal{where() + "vertex references must be separated by spaces (after '" + std::string(t.substr(0, 40)) + "')", false};
+        }
+        ++face;
+    }
+    return std::nullopt;
+}
+
 // ---- STL ----
 
 std::optional<Refusal> prescan_stl(std::string_view d) {
@@ -716,8 +766,8 @@ std::optional<Refusal> prescan_stl(std::string_view d) {
     uint32_t count = 0;
     std::memcpy(&count, d.data() + 80, 4);
     if (84 + 50 * static_cast<std::size_t>(count) <= d.size()) return std::nullopt;
-    // CGAL then retries the file as ASCII, which needs facets.
-    if (d.find("facet") != std::string_view::npos) return std::nullopt;
+    // CGAL then retries the file as ASCII, which can give triangles only from "vertex" lines.
+    if (d.find("vertex") != std::string_view::npos) return std::nullopt;
     return Refusal{"truncated binary STL file: the header declares " + std::to_string(count) + " triangles (" +
                        std::to_string(84 + 50 * static_cast<std::size_t>(count)) + " bytes) but the file has " + std::to_string(d.size()) + " bytes",
                    true};
@@ -761,7 +811,7 @@ TriangleSoup read_mesh_file(const std::string& path) {
             case InFormat::Off: refusal = prescan_off(data); break;
             case InFormat::Ply: refusal = prescan_ply(data); break;
             case InFormat::Stl: refusal = prescan_stl(data); break;
-            case InFormat::Obj: break;  // CGAL's OBJ reader grows its arrays line by line
+            case InFormat::Obj: refusal = prescan_obj(data); break;
         }
         if (refusal) {
             std::optional<std::string> why;
