@@ -401,13 +401,13 @@ void Builder::grow(uint32_t cursor, uint32_t region, uint32_t dest) {
             }
             return turn[i] == (last_turn_ == 0 ? +1 : last_turn_) && turn[j] != turn[i];
         };
-        if (nc == 2 && better(1, 0)) std::swap(idx[0], idx[1]);
+        std::sort(idx, idx + nc, better);  // up to three candidates (the seed has no in-edge)
 
         // Cheap tests first for every candidate considered; searches only if none passes.
         // Without greedy turns only the preferred neighbour is considered (paper, Algorithm 1).
         const uint32_t considered = opt_.greedy ? nc : 1;
         uint32_t chosen = kNone;
-        Classification cls[2];
+        Classification cls[3];
         for (uint32_t i = 0; i < considered; ++i) {
             cls[i] = classify_local(cand[idx[i]], t, region);
             if (cls[i].kind == Kind::Safe && chosen == kNone) chosen = i;
