@@ -163,7 +163,6 @@ Cycles compute_fundamental_cycles(const StripResult& result) {
     // fundamental triangle in strip order, the shortest candidate independent in H1(M; Z2) of
     // those kept so far; fill the slots left with the shortest independent tree–cotree generators.
     Cycles out;
-    if (n == 0) return out;
     const HomologyClassifier classifier(mesh);
     const size_t dim = classifier.dimension();
     std::vector<std::vector<uint64_t>> basis(dim);  // basis[c]: a class whose lowest set bit is c
@@ -191,24 +190,35 @@ Cycles compute_fundamental_cycles(const StripResult& result) {
             }
         if (!found) pending.push_back(i);
     }
-    if (!pending.empty()) {
+    // Slots left, and the rank still missing: constraint edges change which faces are
+    // fundamental (a constraint loop around a handle makes one cycle "visible" only to the
+    // surface), so the surface's 2g+h-1 may exceed the fundamental triangles met. Fill with the
+    // shortest independent tree–cotree generators; drop slots that cannot be filled (more
+    // fundamental triangles than dim H1, e.g. an interior seed): the cycles are the surface's.
+    size_t rank = 0;
+    for (size_t i = 0; i < n; ++i) rank += !chosen[i].faces.empty();
+    std::vector<Candidate> extra;
+    if (rank < dim) {
         std::vector<std::vector<uint32_t>> gens = tree_cotree_generators(mesh);
         std::stable_sort(gens.begin(), gens.end(), [](const auto& u, const auto& v) { return u.size() < v.size(); });
         size_t next = 0;
         for (size_t i : pending) {
             while (next < gens.size() && !insert(classifier.classify(gens[next]))) ++next;
-            if (next < gens.size()) {
-                chosen[i] = {CycleSource::TreeCotree, std::move(gens[next++])};
-            } else {
-                // More fundamental triangles than dim H1 (interior seed): keep the shortest
-                // candidate, dependent as it is, so there is still one cycle per triangle.
-                chosen[i] = std::move(candidates[i].front());
-            }
+            if (next == gens.size()) break;
+            chosen[i] = {CycleSource::TreeCotree, std::move(gens[next++])};
+            ++rank;
         }
+        for (; rank < dim && next < gens.size(); ++next)
+            if (insert(classifier.classify(gens[next]))) {
+                extra.push_back({CycleSource::TreeCotree, std::move(gens[next])});
+                ++rank;
+            }
     }
+    for (Candidate& c : extra) chosen.push_back(std::move(c));
 
     const StripArrays arrays = strip_arrays(result);
-    for (size_t i = 0; i < n; ++i) {
+    for (size_t i = 0; i < chosen.size(); ++i) {
+        if (chosen[i].faces.empty()) continue;  // a slot no independent cycle could fill
         std::vector<uint32_t> cycle;
         for (uint32_t f : chosen[i].faces) cycle.push_back(pos[f]);
         out.lengths.push_back(cycle_length(arrays, cycle));

@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <numeric>
 #include <string>
 
 #include "singlestrip/errors.hpp"
@@ -401,7 +402,9 @@ void Builder::grow(uint32_t cursor, uint32_t region, uint32_t dest) {
             }
             return turn[i] == (last_turn_ == 0 ? +1 : last_turn_) && turn[j] != turn[i];
         };
-        std::sort(idx, idx + nc, better);  // up to three candidates (the seed has no in-edge)
+        // Up to three candidates (the seed has no in-edge): insertion sort.
+        for (uint32_t i = 1; i < nc; ++i)
+            for (uint32_t j = i; j > 0 && better(idx[j], idx[j - 1]); --j) std::swap(idx[j], idx[j - 1]);
 
         // Cheap tests first for every candidate considered; searches only if none passes.
         // Without greedy turns only the preferred neighbour is considered (paper, Algorithm 1).
@@ -779,6 +782,14 @@ StripResult Builder::run() {
         }
         if (nf == 1) dest = kNone;
     }
+    // Betti number of the whole surface (through passable edges), to tell whether the seed itself
+    // is a fundamental triangle (a face joining two boundary loops, paper Fig. 4).
+    long long beta_all = 0;
+    {
+        std::vector<uint32_t> all(mesh_.num_faces());
+        std::iota(all.begin(), all.end(), 0u);
+        beta_all = 1 - chi_of(all, r0);
+    }
     take(kNone, seed);
     // The seed may cut U apart (up to three pieces): label each piece; grow the one holding the
     // destination (or the first) and defer the others, anchored at the seed.
@@ -840,10 +851,16 @@ StripResult Builder::run() {
         }
         // Betti numbers of the pieces (one O(F) pass at the start).
         std::vector<std::vector<uint32_t>> members(region_size_.size());
-        for (uint32_t f = 0; f < nf; ++f)
+        for (uint32_t f = 0; f < mesh_.num_faces(); ++f)  // faces of a target pre-split too
             if (!striped_[f]) members[region_[f]].push_back(f);
         for (uint32_t r = 0; r < members.size(); ++r)
             if (!members[r].empty()) region_beta_[r] = 1 - chi_of(members[r], r);
+        long long beta_pieces = 0;
+        for (uint32_t r = 0; r < members.size(); ++r) beta_pieces += members[r].empty() ? 0 : region_beta_[r];
+        if (beta_all > beta_pieces) {
+            fundamental_[seed] = 1;
+            stats_.fundamental_triangles += static_cast<uint32_t>(beta_all - beta_pieces);
+        }
         if (dest != kNone) grow_region = region_[dest];
         std::vector<uint32_t> done_regions{grow_region};
         for (uint32_t i = 0; i < cnt; ++i) {

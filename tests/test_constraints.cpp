@@ -9,6 +9,7 @@
 #include <set>
 
 #include "cgal_data.hpp"
+#include "singlestrip/cycles.hpp"
 #include "singlestrip/errors.hpp"
 #include "singlestrip/generators.hpp"
 #include "singlestrip/io.hpp"
@@ -256,5 +257,36 @@ TEST(Endpoints, TargetWhoseOnlyFaceIsTheFirstFace) {
         o.target = v;
         const auto c = strip_and_verify(soup, o);
         EXPECT_TRUE(c.report.ok()) << v << ": " << describe(c);
+    }
+}
+
+// Issue 5 point 3: with constraints and endpoints the cycles are still the surface's
+// (2g+h-1 of them, independent), whatever the constraints did to the fundamental triangles.
+TEST(Constraints, CyclesAreTheSurfacesWithConstraintsAndEndpoints) {
+    const uint32_t nm = 12, nn = 8;
+    const TriangleSoup torus = make_torus(nm, nn);
+    auto id = [&](uint32_t i, uint32_t j) { return (i % nm) * nn + j % nn; };
+    std::mt19937_64 rng(5);
+    for (int variant = 0; variant < 4; ++variant) {
+        StripOptions o;
+        if (variant & 1)
+            for (uint32_t j = 0; j < nn; ++j) o.constraint_edges.push_back({id(0, j), id(0, j + 1)});
+        if (variant & 2) {
+            o.source = id(3, 3);
+            o.target = id(9, 2);
+        }
+        auto c = strip_and_verify(torus, o);
+        ASSERT_TRUE(c.report.ok()) << describe(c);
+        const Cycles cycles = compute_fundamental_cycles(c.result);
+        VerifyInput vi;
+        vi.in_points = torus.points;
+        vi.in_faces = torus.triangles;
+        vi.out_points = c.arrays.points;
+        vi.out_faces = c.arrays.faces;
+        vi.out_parent = c.arrays.parent;
+        vi.cycles = cycles.cycles;
+        const VerifyReport rep = verify(vi);
+        EXPECT_TRUE(rep.ok()) << "variant " << variant << ": " << rep.to_string();
+        EXPECT_EQ(cycles.cycles.size(), 2u) << "variant " << variant;
     }
 }

@@ -23,20 +23,16 @@
 // and last -> first share an edge; no face repeats. Adjacency is plain mesh adjacency: constraint
 // edges do not matter (the cycles are the surface's), nor do source/target.
 //
-// Guarantees.
-//   * Always: every cycle is closed, simple, made of edge-adjacent output faces, and there is one
-//     cycle per fundamental triangle.
-//   * Always: the cycles are independent in H1(M; Z2) whenever there are at most 2g+h-1 of them
-//     (by construction: the selection above). If there are more (possible with an interior
-//     seed), the extra ones are the shortest candidates and are dependent.
-//   * The COUNT is the number of fundamental triangles. Seed on the boundary (the builder's
-//     default when there is a boundary) or closed surface: on every mesh tested it is exactly
-//     2g+h-1 (2g closed), so the cycles are a basis of H1(M; Z2) (tests/test_cycles.cpp, checked
-//     by the independent verifier). This is the paper's claim; tested, not proven here.
-//   * Seed NOT on the boundary of a surface with boundary: the first face's edges act as an extra
-//     boundary loop of the unstriped region (paper §3.1 (b)), so there may be one fundamental
-//     triangle too many or too few: count (hence basis) NOT guaranteed; closure, adjacency and
-//     independence (when the count is at most 2g+h-1) still are. tree_cotree.hpp always gives a basis.
+// Guarantees (any seed, any constraints, any source/target).
+//   * Every cycle is closed, simple, made of edge-adjacent output faces.
+//   * There are exactly 2g+h-1 cycles (2g on a closed surface) and they are independent in
+//     H1(M; Z2): a basis. Each fundamental triangle met during stripification contributes its
+//     shortest independent candidate (steepest ascent first, as in §4); when the fundamental
+//     triangles are fewer than the surface's rank (constraint edges hide a handle from the
+//     unstriped region; an interior seed on a surface with boundary) the rest are the shortest
+//     independent tree–cotree generators, and fundamental triangles beyond the rank add nothing.
+//     `sources` says which rule produced each cycle. Checked by the independent verifier in
+//     tests/test_cycles.cpp and tests/test_constraints.cpp.
 //
 // Complexity: O(F) per fundamental triangle (candidates and their classes) plus O(V + F) for the
 // tree–cotree classifier and O(m * dim^2 / 64) for the selection, m cycles, dim = 2g+h-1.
