@@ -178,7 +178,11 @@ int run_strip(const StripArgs& a) {
     opt.greedy = !a.no_greedy;
     opt.source = a.source;
     opt.target = a.target;
-    if (a.constraints) opt.constraint_edges = ss::read_constraints(*a.constraints, static_cast<uint32_t>(soup.points.size()));
+    if (a.constraints) {
+        std::vector<uint32_t> lines;
+        opt.constraint_edges = ss::read_constraints(*a.constraints, static_cast<uint32_t>(soup.points.size()), &lines);
+        ss::check_constraint_edges(*a.constraints, opt.constraint_edges, lines, soup);
+    }
     ss::Mesh mesh = ss::Mesh::from_soup(soup);
     const double t_build = clock.lap();
     ss::StripResult result = ss::build_strip(std::move(mesh), opt);

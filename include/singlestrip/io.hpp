@@ -45,7 +45,14 @@ TriangleSoup read_mesh_file(const std::string& path);
 /// strip builder (RequestError), not here.
 /// \throw InputError naming the file and line for a missing/unreadable file, a token that is
 ///        not a non-negative integer, a polyline with a single vertex, or an index >= num_vertices.
-std::vector<std::pair<uint32_t, uint32_t>> read_constraints(const std::string& path, uint32_t num_vertices);
+std::vector<std::pair<uint32_t, uint32_t>> read_constraints(const std::string& path, uint32_t num_vertices,
+                                                             std::vector<uint32_t>* line_of_pair = nullptr);
+
+/// Checks that every constraint pair is an edge of the triangle soup. `line_of_pair` (from
+/// read_constraints) lets the message name the file line. \throw RequestError naming the file,
+/// the line and the pair. O(F + pairs).
+void check_constraint_edges(const std::string& path, const std::vector<std::pair<uint32_t, uint32_t>>& pairs,
+                            const std::vector<uint32_t>& line_of_pair, const TriangleSoup& soup);
 
 /// Output mesh formats, chosen by extension.
 enum class OutputFormat { Ply, Obj, Off };
