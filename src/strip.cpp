@@ -411,14 +411,18 @@ void Builder::grow(uint32_t cursor, uint32_t region, uint32_t dest) {
         const uint32_t considered = opt_.greedy ? nc : 1;
         uint32_t chosen = kNone;
         Classification cls[3];
-        for (uint32_t i = 0; i < considered; ++i) {
-            cls[i] = classify_local(cand[idx[i]], t, region);
-            if (cls[i].kind == Kind::Safe && chosen == kNone) chosen = i;
+        for (uint32_t i = 0; i < considered; ++i) cls[i] = classify_local(cand[idx[i]], t, region);
+        // In preference order: safe by the cheap tests, or by a search of bounded cost (O(1)
+        // per step, so a long search is never spent on a face we might not take).
+        constexpr size_t kFirstBudget = 256;
+        for (uint32_t i = 0; i < considered && chosen == kNone; ++i) {
+            if (cls[i].kind == Kind::Unknown) resolve(cls[i], cand[idx[i]], region, kFirstBudget);
+            if (cls[i].kind == Kind::Safe) chosen = i;
         }
         // Two undecided candidates: search both with a growing budget, so a quick answer for
         // one is not preceded by a long search of the other (a bridge search not taken is
         // wasted work that no amortisation pays for).
-        for (size_t budget = 64; chosen == kNone; budget *= 4) {
+        for (size_t budget = 4 * kFirstBudget; chosen == kNone; budget *= 4) {
             bool undecided = false;
             for (uint32_t i = 0; i < considered && chosen == kNone; ++i) {
                 if (cls[i].kind != Kind::Unknown) continue;
