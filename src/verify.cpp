@@ -251,6 +251,14 @@ struct ParentFrame {
     V3 a, b, c, n;   // corners and unnormalised normal (b-a)x(c-a)
     double n2 = 0;   // |n|^2
     double size = 0; // longest edge
+    V3 u, v;         // endpoints of a longest edge
+    /// Absolute tolerance for twice an area in this face: relative to size^2, plus the rounding
+    /// of coordinate differences far from the origin.
+    double area_tol = 0;
+    /// Nearly degenerate (a sliver, a needle or a point): |n| <= 1e-6 size^2. Barycentric
+    /// coordinates divide by |n|^2 and lose about log10(size^2/|n|) digits, and the normal's
+    /// direction is noise, so such parents get the robust tests of sliver_contains() instead.
+    bool ill = false;
 };
 
 ParentFrame frame_of(const std::vector<Point3>& pts, const Triangle& t) {
@@ -260,8 +268,36 @@ ParentFrame frame_of(const std::vector<Point3>& pts, const Triangle& t) {
     p.c = pts[t[2]];
     p.n = crs(sub(p.b, p.a), sub(p.c, p.a));
     p.n2 = dot(p.n, p.n);
-    p.size = std::max({norm(sub(p.b, p.a)), norm(sub(p.c, p.b)), norm(sub(p.a, p.c))});
+    const double lab = norm(sub(p.b, p.a)), lbc = norm(sub(p.c, p.b)), lca = norm(sub(p.a, p.c));
+    p.size = std::max({lab, lbc, lca});
+    if (p.size == lab) p.u = p.a, p.v = p.b;
+    else if (p.size == lbc) p.u = p.b, p.v = p.c;
+    else p.u = p.c, p.v = p.a;
+    double m = 0;
+    for (const V3* q : {&p.a, &p.b, &p.c})
+        for (double x : *q) m = std::max(m, std::abs(x));
+    p.area_tol = kRelTol * p.size * p.size + 64 * std::numeric_limits<double>::epsilon() * m * p.size;
+    p.ill = !(std::sqrt(p.n2) > 1e-6 * p.size * p.size);
     return p;
+}
+
+/// Containment test for a nearly degenerate parent that needs no division by its area: q lies
+/// in the parent's bounding box and within the parent's height (|n| / size) of the line through
+/// its longest edge, between that edge's ends (all with tolerance 1e-9 relative to the size,
+/// plus rounding far from the origin).
+bool sliver_contains(const ParentFrame& p, const V3& q) {
+    const double tol = kRelTol * p.size + (p.size > 0 ? p.area_tol / p.size : 0.0) + 1e-300;
+    for (size_t k = 0; k < 3; ++k) {
+        const double lo = std::min({p.a[k], p.b[k], p.c[k]}), hi = std::max({p.a[k], p.b[k], p.c[k]});
+        if (!(q[k] >= lo - tol && q[k] <= hi + tol)) return false;
+    }
+    const V3 d = sub(p.v, p.u);
+    const double dd = dot(d, d);
+    if (!(dd > 0)) return norm(sub(q, p.u)) <= tol;  // the parent is a point
+    const double t = dot(sub(q, p.u), d) / dd;
+    const V3 foot = {p.u[0] + t * d[0], p.u[1] + t * d[1], p.u[2] + t * d[2]};
+    const double height = std::sqrt(p.n2) / p.size;
+    return t >= -kRelTol && t <= 1 + kRelTol && norm(sub(q, foot)) <= height + tol;
 }
 
 /// Barycentric coordinates of the projection of q onto the parent's plane, and the distance
@@ -338,6 +374,12 @@ uint32_t best_container(const std::vector<Point3>& in_pts, const std::vector<Tri
     double best_min = -std::numeric_limits<double>::infinity();
     for (uint32_t f : cand) {
         const ParentFrame p = frame_of(in_pts, in_faces[f]);
+        if (p.ill) {
+            // No reliable barycentrics: a robust containment test, ranked below every
+            // well-conditioned face that contains q.
+            if (sliver_contains(p, q) && best == kNo) best = f;
+            continue;
+        }
         double dist = 0;
         const auto l = bary(p, q, dist);
         if (!(dist <= kRelTol * p.size)) continue;
@@ -770,19 +812,19 @@ VerifyReport verify(const VerifyInput& in) {
         const std::string who = "face " + std::to_string(f) + " (parent " + std::to_string(parent[f]) + ")";
         ++child_count[parent[f]];
         const V3 a = in.out_points[t[0]], b = in.out_points[t[1]], c = in.out_points[t[2]];
-        if (!(std::sqrt(P.n2) > 1e-12 * P.size * P.size)) {
-            // A zero-area input face (real meshes have them): no plane to test against. Its
-            // children must be zero-area too and stay within its extent (a segment or a point).
+        if (P.ill) {
+            // A zero-area or nearly degenerate input face (real meshes and exporters make
+            // them; they are valid input): its plane and barycentrics are noise. Its children
+            // must stay within it (sliver_contains) and none may be larger than it; the area
+            // sum below is then checked with unsigned areas. Orientation cannot be checked.
             ++degenerate_parents_checked;
             bool within = true;
-            for (const V3& q : {a, b, c})
-                for (int k = 0; k < 3; ++k) {
-                    const double lo = std::min({P.a[k], P.b[k], P.c[k]}), hi = std::max({P.a[k], P.b[k], P.c[k]});
-                    if (!(q[k] >= lo - kRelTol * (P.size + 1e-300) && q[k] <= hi + kRelTol * (P.size + 1e-300))) within = false;
-                }
-            const V3 nd = crs(sub(b, a), sub(c, a));
-            if (!within || !(norm(nd) <= 1e-9 * P.size * P.size))
-                fails.add("geometry", who + ": not within its zero-area parent");
+            for (const V3& q : {a, b, c}) within = within && sliver_contains(P, q);
+            const double nd = norm(crs(sub(b, a), sub(c, a)));
+            if (!within) fails.add("geometry", who + ": not within its (nearly) degenerate parent");
+            else if (!(nd <= std::sqrt(P.n2) + P.area_tol))
+                fails.add("geometry", who + ": larger than its (nearly) degenerate parent");
+            child_area[parent[f]] += 0.5 * nd;
             continue;
         }
         bool in_plane = true, inside = true;
@@ -803,7 +845,7 @@ VerifyReport verify(const VerifyInput& in) {
     }
     if (degenerate_parents_checked)
         report.notes.push_back(std::to_string(degenerate_parents_checked) +
-                               " face(s) lie in zero-area input faces: checked to stay within them");
+                               " face(s) lie in zero-area or nearly degenerate input faces: checked to stay within them, orientation not checked");
     if (all_faces_ok && std::all_of(parent.begin(), parent.end(), [](uint32_t p) { return p != kNo; })) {
         for (uint32_t p = 0; p < in.in_faces.size(); ++p) {
             const ParentFrame P = frame_of(in.in_points, in.in_faces[p]);
@@ -812,7 +854,7 @@ VerifyReport verify(const VerifyInput& in) {
                 fails.add("coverage", "input face " + std::to_string(p) + " has no child in the output");
                 continue;
             }
-            if (!(std::abs(child_area[p] - area) <= kRelTol * area))
+            if (!(std::abs(child_area[p] - area) <= kRelTol * area + 0.5 * P.area_tol))
                 fails.add("coverage", "input face " + std::to_string(p) + ": children's areas sum to " +
                                           std::to_string(child_area[p]) + ", parent's area is " + std::to_string(area));
         }
@@ -836,13 +878,26 @@ VerifyReport verify(const VerifyInput& in) {
             const uint32_t a = out.from(h), b = out.to(h);
             const uint32_t P = parent[f];
             uint32_t found = kNo;
-            double ta = 0, tb = 0;
-            for (uint32_t k = 0; k < 3 && found == kNo; ++k) {
+            double ta = 0;
+            // Candidates ranked: the input edge itself (same vertex ids), then an edge sharing
+            // an end vertex with it, then any edge it lies on. Needed for zero-length input
+            // edges, on which every point has the same position (and the parameter t is 0).
+            int found_rank = 3;
+            for (uint32_t k = 0; k < 3; ++k) {
                 const uint32_t ih = 3 * P + k;
                 if (inp.twin[ih] != kNo) continue;
-                const V3 u = in.in_points[inp.from(ih)], v = in.in_points[inp.to(ih)];
-                if (on_segment(u, v, in.out_points[a], &ta) && on_segment(u, v, in.out_points[b], &tb) && ta < tb)
+                const uint32_t iu = inp.from(ih), iv = inp.to(ih);
+                const V3 u = in.in_points[iu], v = in.in_points[iv];
+                double sa = 0, sb = 0;
+                if (!on_segment(u, v, in.out_points[a], &sa) || !on_segment(u, v, in.out_points[b], &sb)) continue;
+                const bool zero_length = u == v;
+                if (!(sa < sb) && !zero_length && !(a == iu && b == iv)) continue;
+                const int rank = a == iu && b == iv ? 0 : (a == iu || b == iv) ? 1 : 2;
+                if (rank < found_rank) {
+                    found_rank = rank;
                     found = ih;
+                    ta = zero_length ? (a == iu ? 0.0 : b == iv ? 1.0 : 0.5) : sa;
+                }
             }
             if (found == kNo) {
                 fails.add("conformity", "edge (" + std::to_string(a) + "," + std::to_string(b) + ") of face " +
@@ -862,6 +917,25 @@ VerifyReport verify(const VerifyInput& in) {
             covered[ih] = true;
             bool ok = pieces[i].a == inp.from(ih) && pieces[j - 1].b == inp.to(ih);
             for (size_t k = i; k + 1 < j; ++k) ok = ok && pieces[k].b == pieces[k + 1].a;
+            if (!ok) {
+                // Positions along the edge do not order the pieces when they coincide (a
+                // zero-length edge, or rounding): the pieces must still chain by vertex ids
+                // from one end of the edge to the other, each used once.
+                std::sort(pieces.begin() + static_cast<std::ptrdiff_t>(i), pieces.begin() + static_cast<std::ptrdiff_t>(j),
+                          [](const Piece& x, const Piece& y) { return x.a < y.a; });
+                std::vector<bool> used(j - i, false);
+                uint32_t cur = inp.from(ih);
+                size_t steps = 0;
+                for (; steps < j - i; ++steps) {
+                    auto it = std::lower_bound(pieces.begin() + static_cast<std::ptrdiff_t>(i), pieces.begin() + static_cast<std::ptrdiff_t>(j), cur,
+                                               [](const Piece& x, uint32_t v) { return x.a < v; });
+                    while (it != pieces.begin() + static_cast<std::ptrdiff_t>(j) && it->a == cur && used[static_cast<size_t>(it - pieces.begin()) - i]) ++it;
+                    if (it == pieces.begin() + static_cast<std::ptrdiff_t>(j) || it->a != cur) break;
+                    used[static_cast<size_t>(it - pieces.begin()) - i] = true;
+                    cur = it->b;
+                }
+                ok = steps == j - i && cur == inp.to(ih);
+            }
             if (!ok)
                 fails.add("conformity", "input boundary edge (" + std::to_string(inp.from(ih)) + "," +
                                             std::to_string(inp.to(ih)) + ") is not tiled exactly by output boundary edges (T-junction, gap or overlap; near face " +
