@@ -247,7 +247,12 @@ Adjacency build_adjacency(size_t num_points, const std::vector<Triangle>& faces,
 
 // --- geometry --------------------------------------------------------------------------------
 
+/// An input face in local coordinates: world coordinates times `scale`, a power of two that
+/// brings its largest coordinate to [0.5, 1) (exact; squares and cross products of huge or tiny
+/// coordinates neither overflow nor underflow). Points tested against it go through local().
 struct ParentFrame {
+    double scale = 1;
+    V3 local(const V3& q) const { return {q[0] * scale, q[1] * scale, q[2] * scale}; }
     V3 a, b, c, n;   // corners and unnormalised normal (b-a)x(c-a)
     double n2 = 0;   // |n|^2
     double size = 0; // longest edge
@@ -263,9 +268,17 @@ struct ParentFrame {
 
 ParentFrame frame_of(const std::vector<Point3>& pts, const Triangle& t) {
     ParentFrame p;
-    p.a = pts[t[0]];
-    p.b = pts[t[1]];
-    p.c = pts[t[2]];
+    double big = 0;
+    for (uint32_t v : t)
+        for (double x : pts[v]) big = std::max(big, std::abs(x));
+    if (big > 0 && std::isfinite(big)) {
+        int e = 0;
+        (void)std::frexp(big, &e);
+        p.scale = std::ldexp(1.0, -e);
+    }
+    p.a = p.local(pts[t[0]]);
+    p.b = p.local(pts[t[1]]);
+    p.c = p.local(pts[t[2]]);
     p.n = crs(sub(p.b, p.a), sub(p.c, p.a));
     p.n2 = dot(p.n, p.n);
     const double lab = norm(sub(p.b, p.a)), lbc = norm(sub(p.c, p.b)), lca = norm(sub(p.a, p.c));
@@ -285,7 +298,8 @@ ParentFrame frame_of(const std::vector<Point3>& pts, const Triangle& t) {
 /// in the parent's bounding box and within the parent's height (|n| / size) of the line through
 /// its longest edge, between that edge's ends (all with tolerance 1e-9 relative to the size,
 /// plus rounding far from the origin).
-bool sliver_contains(const ParentFrame& p, const V3& q) {
+bool sliver_contains(const ParentFrame& p, const V3& world_q) {
+    const V3 q = p.local(world_q);
     const double tol = kRelTol * p.size + (p.size > 0 ? p.area_tol / p.size : 0.0) + 1e-300;
     for (size_t k = 0; k < 3; ++k) {
         const double lo = std::min({p.a[k], p.b[k], p.c[k]}), hi = std::max({p.a[k], p.b[k], p.c[k]});
@@ -302,7 +316,8 @@ bool sliver_contains(const ParentFrame& p, const V3& q) {
 
 /// Barycentric coordinates of the projection of q onto the parent's plane, and the distance
 /// of q from that plane.
-std::array<double, 3> bary(const ParentFrame& p, const V3& q, double& plane_dist) {
+std::array<double, 3> bary(const ParentFrame& p, const V3& world_q, double& plane_dist) {
+    const V3 q = p.local(world_q);
     const double nn = std::sqrt(p.n2);
     plane_dist = nn > 0 ? std::abs(dot(sub(q, p.a), p.n)) / nn : std::numeric_limits<double>::infinity();
     if (!(p.n2 > 0)) return {-1, -1, -1};
@@ -326,7 +341,20 @@ double seg_param(const V3& u, const V3& v, const V3& q, double& dist) {
 }
 
 /// q on the closed segment u-v (within tolerance relative to its length).
-bool on_segment(const V3& u, const V3& v, const V3& q, double* t_out = nullptr) {
+bool on_segment(const V3& wu, const V3& wv, const V3& wq, double* t_out = nullptr) {
+    // In units where the segment's largest coordinate is in [0.5, 1): no overflow for huge
+    // coordinates (an exact power-of-two scaling).
+    double big = 0;
+    for (const V3* p : {&wu, &wv})
+        for (double x : *p) big = std::max(big, std::abs(x));
+    double scale = 1;
+    if (big > 0 && std::isfinite(big)) {
+        int e = 0;
+        (void)std::frexp(big, &e);
+        scale = std::ldexp(1.0, -e);
+    }
+    const V3 u = {wu[0] * scale, wu[1] * scale, wu[2] * scale}, v = {wv[0] * scale, wv[1] * scale, wv[2] * scale},
+             q = {wq[0] * scale, wq[1] * scale, wq[2] * scale};
     double dist = 0;
     const double t = seg_param(u, v, q, dist);
     const double len = norm(sub(v, u));
@@ -811,7 +839,8 @@ VerifyReport verify(const VerifyInput& in) {
         const ParentFrame P = frame_of(in.in_points, in.in_faces[parent[f]]);
         const std::string who = "face " + std::to_string(f) + " (parent " + std::to_string(parent[f]) + ")";
         ++child_count[parent[f]];
-        const V3 a = in.out_points[t[0]], b = in.out_points[t[1]], c = in.out_points[t[2]];
+        const V3 wa = in.out_points[t[0]], wb = in.out_points[t[1]], wc = in.out_points[t[2]];
+        const V3 a = P.local(wa), b = P.local(wb), c = P.local(wc);  // for areas, in the parent's units
         if (P.ill) {
             // A zero-area or nearly degenerate input face (real meshes and exporters make
             // them; they are valid input): its plane and barycentrics are noise. Its children
@@ -819,7 +848,7 @@ VerifyReport verify(const VerifyInput& in) {
             // sum below is then checked with unsigned areas. Orientation cannot be checked.
             ++degenerate_parents_checked;
             bool within = true;
-            for (const V3& q : {a, b, c}) within = within && sliver_contains(P, q);
+            for (const V3& q : {wa, wb, wc}) within = within && sliver_contains(P, q);
             const double nd = norm(crs(sub(b, a), sub(c, a)));
             if (!within) fails.add("geometry", who + ": not within its (nearly) degenerate parent");
             else if (!(nd <= std::sqrt(P.n2) + P.area_tol))
@@ -828,7 +857,7 @@ VerifyReport verify(const VerifyInput& in) {
             continue;
         }
         bool in_plane = true, inside = true;
-        for (const V3& p : {a, b, c}) {
+        for (const V3& p : {wa, wb, wc}) {
             double dist = 0;
             const auto l = bary(P, p, dist);
             if (!(dist <= kRelTol * P.size)) in_plane = false;
@@ -856,7 +885,8 @@ VerifyReport verify(const VerifyInput& in) {
             }
             if (!(std::abs(child_area[p] - area) <= kRelTol * area + 0.5 * P.area_tol))
                 fails.add("coverage", "input face " + std::to_string(p) + ": children's areas sum to " +
-                                          std::to_string(child_area[p]) + ", parent's area is " + std::to_string(area));
+                                          std::to_string(child_area[p] / (P.scale * P.scale)) + ", parent's area is " +
+                                          std::to_string(area / (P.scale * P.scale)));
         }
     } else {
         report.notes.push_back("area sums not checked (some faces invalid or without parent)");

@@ -20,11 +20,11 @@
 #include <fstream>
 #include <iterator>
 #include <new>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "../fuzz/check_pipeline.hpp"
-#include "../fuzz/known_findings.hpp"
 #include "singlestrip/errors.hpp"
 #include "singlestrip/io.hpp"
 
@@ -88,7 +88,7 @@ std::vector<fs::path> sample_meshes() {
 }
 
 struct Tally {
-    size_t cases = 0, refused = 0, stripped = 0, skipped_known = 0;
+    size_t cases = 0, refused = 0, stripped = 0;
     std::vector<std::string> failures;
     void fail(const std::string& what) {
         if (failures.size() < 20) failures.push_back(what);
@@ -96,40 +96,34 @@ struct Tally {
     }
 };
 
-/// One case: the bytes as a file with extension `ext`. Known open findings (fuzz/known_findings.hpp)
-/// are skipped and counted.
-void run_case(const std::string& bytes, const std::string& ext, const std::string& label, Tally& t) {
-    ++t.cases;
-    // F4 (OFF counts) needs no skip here: single-byte edits of small files keep counts small.
-    if (ext == ".ply" && fuzzcheck::ply_header_known_finding(bytes)) {
-        ++t.skipped_known;
-        return;
-    }
-    const std::string path = write_case(bytes, ext);
+/// Reads `path` as a mesh; "" when read_mesh_file threw InputError naming the file or the soup
+/// passed the checked pipeline (refused or stripped and verified), else what went wrong.
+std::string check_file(const std::string& path, const std::string& label, Tally& t) {
     TriangleSoup soup;
     try {
         soup = read_mesh_file(path);
     } catch (const InputError& e) {
         ++t.refused;
-        if (std::string(e.what()).rfind(path, 0) != 0) t.fail(label + ": InputError does not name the file: " + e.what());
-        return;
+        if (std::string(e.what()).rfind(path, 0) != 0) return label + ": InputError does not name the file: " + e.what();
+        return {};
     } catch (const std::exception& e) {
-        t.fail(label + ": read_mesh_file threw a non-InputError: " + e.what());
-        return;
+        return label + ": read_mesh_file threw a non-InputError: " + e.what();
     }
-    if (auto p = fuzzcheck::check_soup(soup); !p.empty()) return t.fail(label + ": " + p);
-    if (fuzzcheck::has_degenerate_face(soup)) {
-        ++t.skipped_known;
-        return;
-    }
+    if (auto p = fuzzcheck::check_soup(soup); !p.empty()) return label + ": " + p;
     fuzzcheck::Outcome outcome;
-    if (auto p = fuzzcheck::check_pipeline(std::move(soup), {}, &outcome); !p.empty()) return t.fail(label + ": " + p);
+    if (auto p = fuzzcheck::check_pipeline(std::move(soup), {}, &outcome); !p.empty()) return label + ": " + p;
     ++(outcome == fuzzcheck::Outcome::Stripped ? t.stripped : t.refused);
+    return {};
+}
+
+/// One case: the bytes as a file with extension `ext`.
+void run_case(const std::string& bytes, const std::string& ext, const std::string& label, Tally& t) {
+    ++t.cases;
+    if (auto p = check_file(write_case(bytes, ext), label, t); !p.empty()) t.fail(p);
 }
 
 void report(const Tally& t) {
-    std::printf("  %zu cases: %zu refused with InputError/RequestError, %zu stripped and verified, %zu skipped (known open findings)\n",
-                t.cases, t.refused, t.stripped, t.skipped_known);
+    std::printf("  %zu cases: %zu refused with InputError/RequestError, %zu stripped and verified\n", t.cases, t.refused, t.stripped);
     for (const auto& f : t.failures) ADD_FAILURE() << f;
 }
 
@@ -236,9 +230,9 @@ TEST(ResourceLimits, AbsurdTriangleCountInTinyBinaryStlIsRefused) {
     EXPECT_EQ(refused_cheaply(binary_stl(0xffffffffu, 0), ".stl"), "");
 }
 
-// Open finding F7: CGAL's binary PLY reader allocates count * size for a face list before
+// Finding F7 (fixed): CGAL's binary PLY reader allocates count * size for a face list before
 // reading it (8 GB for the count 2^31-1 in this 130-byte file).
-TEST(ResourceLimits, DISABLED_HugeListCountInBinaryPlyIsRefused) {
+TEST(ResourceLimits, HugeListCountInBinaryPlyIsRefused) {
     std::string s = ply_header("binary_little_endian", "3", "1", "uint int");
     const float xyz[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
     s.append(reinterpret_cast<const char*>(xyz), sizeof xyz);
@@ -248,19 +242,19 @@ TEST(ResourceLimits, DISABLED_HugeListCountInBinaryPlyIsRefused) {
     EXPECT_EQ(refused_cheaply(s, ".ply"), "");
 }
 
-// Open findings F4, F2 and F1 (docs/reliability.md): enable when src/io/read_mesh.cpp checks the
-// declared counts against the file size before calling CGAL.
-TEST(ResourceLimits, DISABLED_OffCountsAreCheckedBeforeAllocating) {
+// Finding F4 (fixed): OFF header counts are checked against the file size before CGAL allocates.
+TEST(ResourceLimits, OffCountsAreCheckedBeforeAllocating) {
     EXPECT_EQ(refused_cheaply("OFF\n100000000 100000000 0\n", ".off"), "");
     EXPECT_EQ(refused_cheaply("OFF\n3 100000000 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", ".off"), "");
 }
 
-// Open finding F8: CGAL resizes an OFF polygon to its declared corner count before reading it.
-TEST(ResourceLimits, DISABLED_OffFaceCornerCountIsCheckedBeforeAllocating) {
+// Finding F8 (fixed): CGAL resizes an OFF polygon to its declared corner count before reading it.
+TEST(ResourceLimits, OffFaceCornerCountIsCheckedBeforeAllocating) {
     EXPECT_EQ(refused_cheaply("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n300000000 0 1 2\n", ".off"), "");
 }
 
-TEST(ResourceLimits, DISABLED_PlyElementWithoutPropertiesDoesNotHang) {
+// Findings F2 (hang) and F1 (crash) in CGAL's PLY header handling (fixed).
+TEST(ResourceLimits, PlyElementWithoutPropertiesDoesNotHang) {
     EXPECT_EQ(refused_cheaply("ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
                               "element face 1\nproperty list uchar int vertex_indices\nelement foo 1000000000000\nend_header\n"
                               "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
@@ -268,6 +262,154 @@ TEST(ResourceLimits, DISABLED_PlyElementWithoutPropertiesDoesNotHang) {
               "");
 }
 
-TEST(ResourceLimits, DISABLED_PlyPropertyBeforeElementDoesNotCrash) {
+TEST(ResourceLimits, PlyPropertyBeforeElementDoesNotCrash) {
     EXPECT_EQ(refused_cheaply("ply\nformat binary_little_endian 1.0\nproperty float x\nelement vertex 0\nend_header\n", ".ply"), "");
+}
+
+// ---- every fuzz reproducer -------------------------------------------------------------------
+
+// Each file in fuzz/repro/ once crashed, hung, exhausted memory or gave a strip that verify()
+// rejected (docs/reliability.md, F1-F10). Mesh files must now give a clean InputError or a
+// verified strip, each in a forked child (a regressed crash must not take the suite down) with
+// the allocation probe; companion files (.constraints.txt, .fuzz_pipeline) are used by
+// PipelineReproducers below.
+namespace {
+
+std::vector<fs::path> repro_files() {
+    std::vector<fs::path> out;
+    for (const auto& e : fs::directory_iterator(fs::path(SINGLESTRIP_SOURCE_DIR) / "fuzz" / "repro")) out.push_back(e.path());
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+bool is_mesh(const fs::path& p) {
+    const std::string ext = p.extension().string();
+    return ext == ".obj" || ext == ".off" || ext == ".ply" || ext == ".stl";
+}
+
+/// check_file() in a forked child: "" when it passed with no allocation above 1 GiB.
+std::string check_file_isolated(const fs::path& path) {
+    std::fflush(nullptr);
+    const pid_t pid = fork();
+    if (pid == 0) {
+        alarm(60);
+        g_largest_request = 0;
+        Tally t;
+        const std::string p = check_file(path.string(), path.filename().string(), t);
+        if (!p.empty()) std::fprintf(stderr, "%s\n", p.c_str());
+        if (p.empty() && g_largest_request.load() > (size_t{64} << 20))
+            std::fprintf(stderr, "largest allocation: %zu bytes\n", g_largest_request.load());
+        std::fflush(stderr);
+        _exit(!p.empty() ? 1 : g_largest_request.load() > (size_t{64} << 20) ? 2 : t.stripped ? 3 : 4);
+    }
+    int st = 0;
+    waitpid(pid, &st, 0);
+    if (WIFSIGNALED(st)) return WTERMSIG(st) == SIGALRM ? "hang (killed after 60 s)" : "killed by signal " + std::to_string(WTERMSIG(st));
+    switch (WEXITSTATUS(st)) {
+        case 1: return "finding (see stderr)";
+        case 2: return "allocated more than 64 MiB at once";
+        case 3: return "";  // stripped and verified
+        case 4: return "";  // refused cleanly
+        default: return "child exit " + std::to_string(WEXITSTATUS(st));
+    }
+}
+
+}  // namespace
+
+TEST(Reproducers, EveryReproducerMeshIsRefusedOrVerified) {
+    size_t meshes = 0;
+    for (const auto& f : repro_files()) {
+        if (!is_mesh(f)) continue;
+        ++meshes;
+        EXPECT_EQ(check_file_isolated(f), "") << f.filename().string();
+    }
+    EXPECT_GE(meshes, 12u) << "fuzz/repro/ should hold the reproducers of F1-F10";
+}
+
+TEST(Reproducers, PipelineReproducersVerify) {
+    // F9: seed face 0 with the constraint polyline of strip_grow_three_candidates.constraints.txt;
+    // F6: the annulus with default options and the 2-hole sphere with seed face 5 (on the
+    // boundary), where the cycle count is guaranteed and checked by verify().
+    const fs::path dir = fs::path(SINGLESTRIP_SOURCE_DIR) / "fuzz" / "repro";
+    struct Case {
+        std::string mesh, constraints;
+        std::optional<uint32_t> seed;
+        bool orient;
+    };
+    const Case cases[] = {{"strip_grow_three_candidates.off", "strip_grow_three_candidates.constraints.txt", 0u, false},
+                          {"cycles_annulus_missing_cycle.off", "", std::nullopt, false},
+                          {"cycles_seed_face_on_boundary.off", "", 5u, true}};
+    for (const auto& c : cases) {
+        const std::string path = (dir / c.mesh).string();
+        TriangleSoup soup = read_mesh_file(path);
+        fuzzcheck::Request req;
+        req.orient = c.orient;
+        req.strip.seed_face = c.seed;
+        if (!c.constraints.empty())
+            req.strip.constraint_edges = read_constraints((dir / c.constraints).string(), static_cast<uint32_t>(soup.points.size()));
+        fuzzcheck::Outcome outcome;
+        EXPECT_EQ(fuzzcheck::check_pipeline(std::move(soup), req, &outcome), "") << c.mesh;
+        EXPECT_EQ(outcome, fuzzcheck::Outcome::Stripped) << c.mesh;
+    }
+}
+
+// ---- F5: the verifier and degenerate input faces --------------------------------------------
+
+namespace {
+
+/// A needle of height 1e-7 (|n| = 1e-7 size^2: barycentrics ill-conditioned) split at the
+/// midpoint of its long edge, all coordinates times `s`.
+VerifyInput split_needle(double s) {
+    VerifyInput v;
+    v.in_points = {{0, 0, 0}, {s, 0, 0}, {0.5 * s, 1e-7 * s, 0}};
+    v.in_faces = {{0, 1, 2}};
+    v.out_points = v.in_points;
+    v.out_points.push_back({0.5 * s, 0, 0});
+    v.out_faces = {{0, 3, 2}, {3, 1, 2}};
+    v.out_parent = {0, 0};
+    return v;
+}
+
+bool has_check(const VerifyReport& r, const std::string& check) {
+    for (const auto& f : r.failures)
+        if (f.rfind(check + ":", 0) == 0) return true;
+    return false;
+}
+
+}  // namespace
+
+TEST(Reproducers, VerifierAcceptsAndStillChecksDegenerateParents) {
+    for (double s : {1.0, 1e-300, 1e300}) {
+        SCOPED_TRACE("scale " + std::to_string(s));
+        VerifyInput v = split_needle(s);
+        EXPECT_TRUE(verify(v).ok()) << verify(v).to_string();
+        v.out_parent.clear();  // parents inferred (OBJ/OFF outputs)
+        EXPECT_TRUE(verify(v).ok()) << verify(v).to_string();
+
+        v = split_needle(s);
+        v.out_points[3] = {0.5 * s, 1e-3 * s, 0};  // the split vertex leaves the needle
+        EXPECT_TRUE(has_check(verify(v), "geometry")) << verify(v).to_string();
+
+        v = split_needle(s);
+        v.out_faces.pop_back();  // a child dropped: area and boundary give it away
+        v.out_parent.pop_back();
+        const VerifyReport r = verify(v);
+        EXPECT_TRUE(has_check(r, "coverage")) << r.to_string();
+        EXPECT_TRUE(has_check(r, "conformity")) << r.to_string();
+
+        v = split_needle(s);
+        v.out_points[3] = {0.25 * s, 0, 0};  // off the midpoint but inside: areas 1/4 + 3/4, fine
+        EXPECT_TRUE(verify(v).ok()) << verify(v).to_string();
+    }
+    // Coincident corners: a point-sized face, output identical to the input.
+    VerifyInput p;
+    p.in_points = {{1, 2, 3}, {1, 2, 3}, {1, 2, 3}};
+    p.in_faces = {{0, 1, 2}};
+    p.out_points = p.in_points;
+    p.out_faces = p.in_faces;
+    EXPECT_TRUE(verify(p).ok()) << verify(p).to_string();
+    p.out_points.push_back({1, 2, 4});  // a child reaching outside the point
+    p.out_faces = {{0, 1, 3}};
+    p.out_parent = {0};
+    EXPECT_FALSE(verify(p).ok());
 }
