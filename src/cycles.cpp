@@ -18,7 +18,10 @@ namespace {
 
 /// Breadth-first shortest path of faces from `from` to `to` avoiding face `avoid`; empty when
 /// there is none. The path includes both ends.
-std::vector<uint32_t> bfs_path(const Mesh& mesh, uint32_t from, uint32_t to, uint32_t avoid) {
+// Shortest chain of edge-adjacent faces from `from` to `to` avoiding `avoid`; with `time`, only
+// through faces whose time is greater than `after`.
+std::vector<uint32_t> bfs_path(const Mesh& mesh, uint32_t from, uint32_t to, uint32_t avoid,
+                               const std::vector<uint32_t>* time = nullptr, uint32_t after = 0) {
     std::vector<uint32_t> parent(mesh.num_faces(), kNone);
     std::vector<uint32_t> queue{from};
     parent[from] = from;
@@ -28,6 +31,7 @@ std::vector<uint32_t> bfs_path(const Mesh& mesh, uint32_t from, uint32_t to, uin
         for (uint32_t k = 0; k < 3; ++k) {
             const uint32_t g = mesh.neighbor(Mesh::halfedge(f, k));
             if (g == kNone || g == avoid || parent[g] != kNone) continue;
+            if (time && ((*time)[g] == kNone || (*time)[g] <= after)) continue;
             parent[g] = f;
             queue.push_back(g);
         }
@@ -149,6 +153,22 @@ Cycles compute_fundamental_cycles(const StripResult& result) {
         if (!around.empty()) {
             around.insert(around.begin(), t);
             cand.push_back({CycleSource::ShortestPath, std::move(around)});
+        }
+        // (5) The paper's parallel path, shortest: T's neighbours taken after T were joined,
+        // when T was taken, by the faces still unstriped then (the faces taken later); a
+        // breadth-first path through those closes the cycle. Independent of strip positions.
+        if (result.take_time.size() == nf) {
+            const uint32_t tt = result.take_time[t];
+            std::vector<uint32_t> later;
+            for (uint32_t g : nb)
+                if (result.take_time[g] != kNone && result.take_time[g] > tt) later.push_back(g);
+            for (size_t x = 0; x < later.size(); ++x)
+                for (size_t y = x + 1; y < later.size(); ++y) {
+                    std::vector<uint32_t> path = bfs_path(mesh, later[x], later[y], t, &result.take_time, tt);
+                    if (path.empty()) continue;
+                    path.insert(path.begin(), t);
+                    cand.push_back({CycleSource::ParallelPath, std::move(path)});
+                }
         }
         if (cand.empty())
             throw InternalError("fundamental cycles: no path around the fundamental triangle at position " +

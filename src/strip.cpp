@@ -43,6 +43,8 @@ private:
     std::vector<uint32_t> stamp_;      ///< per face: search marks (stamp_base_ + side)
     uint32_t stamp_base_ = 0;
     std::vector<uint8_t> fundamental_; ///< per face: taken as a fundamental triangle
+    std::vector<uint32_t> time_;       ///< per face: when it was taken (StripResult::take_time)
+    uint32_t clock_ = 0;
 
     // ---- regions ----
     std::vector<uint32_t> region_size_;  ///< unstriped faces per region label
@@ -139,6 +141,7 @@ void Builder::grow_arrays() {
     prev_.resize(nf, kNone);
     stamp_.resize(nf, 0);
     fundamental_.resize(nf, 0);
+    time_.resize(nf, kNone);
     blocked_.resize(mesh_.num_halfedges(), 0);
     vstamp_.resize(mesh_.num_vertices(), 0);
 }
@@ -198,6 +201,7 @@ void Builder::insert_after(uint32_t cursor, uint32_t f) {
 void Builder::take(uint32_t cursor, uint32_t f) {
     if (striped_[f]) throw InternalError("strip builder: face " + std::to_string(f) + " taken twice");
     striped_[f] = 1;
+    time_[f] = clock_++;
     --region_size_[region_[f]];
     insert_after(cursor, f);
 }
@@ -514,6 +518,7 @@ void Builder::absorb(uint32_t record) {
     striped_[s.f_b] = 1;
     region_[s.f_b] = kNoRegion;
     fundamental_[s.f_b] = fundamental_[host];
+    time_[s.f_b] = time_[host];
     region_[s.g_a] = region;
     ++region_size_[region];
     // c0 keeps the host's in-edge, c1 its out-edge; a0 is the anchor child beside c0.
@@ -913,6 +918,7 @@ StripResult Builder::run() {
     }
     stats_.output_triangles = mesh_.num_faces();
     result.stats = stats_;
+    result.take_time = std::move(time_);
     result.mesh = std::move(mesh_);
     return result;
 }

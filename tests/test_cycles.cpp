@@ -430,10 +430,10 @@ void check_real(const std::string& name, long long expected_genus, long long exp
     std::printf("[cycles] %s: g=%lld h=%lld cycles=%zu | steepest ascent: mean %.4f (%.1f faces) | tree-cotree: mean %.4f (%.1f faces)\n",
                 name.c_str(), g, b, o.strip_cycles.cycles.size(), mean(o.strip_cycles.lengths), mean_faces(o.strip_cycles),
                 mean(o.tc_cycles.lengths), mean_faces(o.tc_cycles));
-    size_t by_source[5] = {0, 0, 0, 0, 0};
+    size_t by_source[6] = {0, 0, 0, 0, 0, 0};
     for (CycleSource src : o.strip_cycles.sources) ++by_source[static_cast<size_t>(src)];
-    std::printf("[cycles] %s sources: ascent %zu, descent %zu, strip segment %zu, shortest path %zu, tree-cotree fill %zu\n",
-                name.c_str(), by_source[0], by_source[1], by_source[2], by_source[3], by_source[4]);
+    std::printf("[cycles] %s sources: ascent %zu, descent %zu, strip segment %zu, shortest path %zu, tree-cotree fill %zu, parallel path %zu\n",
+                name.c_str(), by_source[0], by_source[1], by_source[2], by_source[3], by_source[4], by_source[5]);
     ::testing::Test::RecordProperty("steepest_ascent_mean_length", std::to_string(mean(o.strip_cycles.lengths)));
     ::testing::Test::RecordProperty("tree_cotree_mean_length", std::to_string(mean(o.tc_cycles.lengths)));
 }

@@ -9,7 +9,12 @@
 //       at most pos(D) - pos(S) steps and visits no face twice (abandoned if it runs into T);
 //   (2) steepest descent from D to S, the mirror image;
 //   (3) strip segments (§4): T plus the strip between two neighbours on the same side of T;
-//   (4) a breadth-first shortest path from S to D avoiding T.
+//   (4) a breadth-first shortest path from S to D avoiding T;
+//   (5) the paper's parallel path (§3.1), shortest: a breadth-first path between T's neighbours
+//       taken after T through faces taken after T (StripResult::take_time), i.e. through the
+//       region that was still unstriped when T was found to be fundamental. Independent of how
+//       splices reordered positions; usually the shortest independent candidate (measured in
+//       docs/benchmarks.md against tree–cotree generators).
 // Shortcuts can change the homology class: a steepest ascent often closes around one vertex of T
 // (null-homologous), and since the builder splices deferred islands into the strip, positions
 // are not the order in which faces were taken, so even a strip segment can miss the handle.
@@ -47,7 +52,7 @@
 namespace singlestrip {
 
 /// Where a cycle came from (see the top of this header).
-enum class CycleSource : uint8_t { SteepestAscent, SteepestDescent, StripSegment, ShortestPath, TreeCotree };
+enum class CycleSource : uint8_t { SteepestAscent, SteepestDescent, StripSegment, ShortestPath, TreeCotree, ParallelPath };
 
 struct Cycles {
     /// Face indices into the OUTPUT (strip order), one closed chain per cycle.
