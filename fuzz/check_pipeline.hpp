@@ -16,7 +16,6 @@
 #include <exception>
 #include <map>
 #include <optional>
-#include <set>
 #include <typeinfo>
 #include <string>
 #include <utility>
@@ -54,39 +53,10 @@ inline std::string check_soup(const TriangleSoup& s) {
     return {};
 }
 
-/// Weak cycle check used when verify()'s count/independence guarantee does not apply (see
-/// cycles.hpp): every cycle is a closed chain of edge-adjacent faces with no repeated face.
-inline std::string check_cycle_chains(const std::vector<Triangle>& faces, const std::vector<std::vector<uint32_t>>& cycles) {
-    auto adjacent = [&](uint32_t f, uint32_t g) {
-        int common = 0;
-        for (uint32_t a : faces[f])
-            for (uint32_t b : faces[g]) common += a == b;
-        return common == 2;
-    };
-    for (size_t c = 0; c < cycles.size(); ++c) {
-        const auto& cy = cycles[c];
-        std::set<uint32_t> seen;
-        for (size_t i = 0; i < cy.size(); ++i) {
-            if (cy[i] >= faces.size()) return "cycle " + std::to_string(c) + " has out-of-range face " + std::to_string(cy[i]);
-            if (!seen.insert(cy[i]).second) return "cycle " + std::to_string(c) + " repeats face " + std::to_string(cy[i]);
-        }
-        if (cy.size() < 2) continue;  // checked by count elsewhere; a 1-face chain is not closed
-        for (size_t i = 0; i < cy.size(); ++i)
-            if (!adjacent(cy[i], cy[(i + 1) % cy.size()]))
-                return "cycle " + std::to_string(c) + ": faces " + std::to_string(cy[i]) + " and " +
-                       std::to_string(cy[(i + 1) % cy.size()]) + " are not edge-adjacent";
-    }
-    return {};
-}
-
 struct Request {
     bool orient = false;
     StripOptions strip;
     bool cycles = true;       ///< run compute_fundamental_cycles and tree_cotree_cycles
-    /// Known open finding F6 (docs/reliability.md): the strip's fundamental cycles can be fewer
-    /// than 2g+h-1 although cycles.hpp says they are not. When set, a verify() report whose
-    /// only failures are the cycle count is not a finding (independence is still checked).
-    bool tolerate_cycle_count = false;
 };
 
 /// Runs the pipeline on `soup` (see top of file). `outcome` (optional) tells whether the input
@@ -109,10 +79,6 @@ inline std::string check_pipeline(TriangleSoup soup, const Request& req, Outcome
             return std::string("prepare_soup accepted a soup that Mesh::from_soup rejects: ") + e.what();
         }
         if (mesh.num_components() != 1) return "prepare_soup accepted a mesh with " + std::to_string(mesh.num_components()) + " components";
-        const bool closed = mesh.num_boundary_edges() == 0;
-        bool seed_on_boundary = false;
-        if (req.strip.seed_face && *req.strip.seed_face < mesh.num_faces())
-            for (uint32_t k = 0; k < 3; ++k) seed_on_boundary |= mesh.is_boundary(3 * *req.strip.seed_face + k);
 
         stage = "build_strip";
         StripResult r;
@@ -147,28 +113,18 @@ inline std::string check_pipeline(TriangleSoup soup, const Request& req, Outcome
         vi.source = req.strip.source;
         vi.target = req.strip.target;
 
-        std::string weak;
         if (req.cycles) {
             stage = "compute_fundamental_cycles";
             Cycles cy = compute_fundamental_cycles(r);
-            if (cy.cycles.size() != r.fundamental_positions.size())
-                return std::to_string(cy.cycles.size()) + " cycles for " + std::to_string(r.fundamental_positions.size()) +
-                       " fundamental triangles";
-            // cycles.hpp guarantees count and independence only for a seed on the boundary (the
-            // default) or a closed surface; constraints and source/target change the seed.
-            const bool guaranteed = req.strip.constraint_edges.empty() && !req.strip.source && !req.strip.target &&
-                                    (closed || !req.strip.seed_face || seed_on_boundary);
-            if (guaranteed) vi.cycles = cy.cycles;
-            else weak = check_cycle_chains(a.faces, cy.cycles);
-            if (!weak.empty()) return "fundamental cycles: " + weak;
+            if (cy.sources.size() != cy.cycles.size())
+                return std::to_string(cy.sources.size()) + " cycle sources for " + std::to_string(cy.cycles.size()) + " cycles";
+            // cycles.hpp guarantees a basis of H1 (2g+h-1 independent closed chains) for any
+            // seed, constraints and source/target: verify() checks count and independence.
+            vi.cycles = cy.cycles;
         }
         stage = "verify";
         VerifyReport rep = verify(vi);
-        if (!rep.ok()) {
-            bool only_count = req.tolerate_cycle_count;
-            for (const auto& f : rep.failures) only_count &= f.rfind("cycles: found ", 0) == 0;
-            if (!only_count) return "verify failed:\n" + rep.to_string();
-        }
+        if (!rep.ok()) return "verify failed:\n" + rep.to_string();
 
         if (req.cycles) {
             stage = "tree_cotree_cycles";

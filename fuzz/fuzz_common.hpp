@@ -25,17 +25,6 @@ inline std::string write_temp(const uint8_t* data, size_t size, const std::strin
     return path;
 }
 
-/// Known open findings (docs/reliability.md, fuzz/repro/) are skipped so that fuzzing can go
-/// deeper and the smoke run stays green until they are fixed; SINGLESTRIP_FUZZ_STRICT=1 turns
-/// the filters off (then every known finding reproduces within seconds).
-inline bool skip_known() {
-    static const bool skip = [] {
-        const char* e = std::getenv("SINGLESTRIP_FUZZ_STRICT");
-        return !(e && *e && *e != '0');
-    }();
-    return skip;
-}
-
 [[noreturn]] inline void finding(const std::string& what) {
     std::fprintf(stderr, "\n*** singlestrip fuzz finding ***\n%s\n", what.c_str());
     std::fflush(stderr);

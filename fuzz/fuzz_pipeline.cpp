@@ -18,7 +18,6 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     }
     fuzzcheck::Request req;
     fuzzcheck::decode_options(in, soup, req);
-    req.tolerate_cycle_count = fuzzcheck::skip_known();  // F6
     if (std::getenv("SINGLESTRIP_FUZZ_VERBOSE")) fuzzcheck::dump(soup, req);
     if (auto p = fuzzcheck::check_pipeline(std::move(soup), req); !p.empty()) fuzzcheck::finding(p);
     return 0;

@@ -247,6 +247,15 @@ Adjacency build_adjacency(size_t num_points, const std::vector<Triangle>& faces,
 
 // --- geometry --------------------------------------------------------------------------------
 
+/// The power of two that brings `big` (a largest absolute coordinate) to [0.5, 1): multiplying
+/// by it is exact. Capped at 2^1000 so that it stays finite for subnormal coordinates.
+double unit_scale(double big) {
+    if (!(big > 0) || !std::isfinite(big)) return 1;
+    int e = 0;
+    (void)std::frexp(big, &e);
+    return std::ldexp(1.0, -std::max(e, -1000));
+}
+
 /// An input face in local coordinates: world coordinates times `scale`, a power of two that
 /// brings its largest coordinate to [0.5, 1) (exact; squares and cross products of huge or tiny
 /// coordinates neither overflow nor underflow). Points tested against it go through local().
@@ -271,11 +280,7 @@ ParentFrame frame_of(const std::vector<Point3>& pts, const Triangle& t) {
     double big = 0;
     for (uint32_t v : t)
         for (double x : pts[v]) big = std::max(big, std::abs(x));
-    if (big > 0 && std::isfinite(big)) {
-        int e = 0;
-        (void)std::frexp(big, &e);
-        p.scale = std::ldexp(1.0, -e);
-    }
+    p.scale = unit_scale(big);
     p.a = p.local(pts[t[0]]);
     p.b = p.local(pts[t[1]]);
     p.c = p.local(pts[t[2]]);
@@ -347,12 +352,7 @@ bool on_segment(const V3& wu, const V3& wv, const V3& wq, double* t_out = nullpt
     double big = 0;
     for (const V3* p : {&wu, &wv})
         for (double x : *p) big = std::max(big, std::abs(x));
-    double scale = 1;
-    if (big > 0 && std::isfinite(big)) {
-        int e = 0;
-        (void)std::frexp(big, &e);
-        scale = std::ldexp(1.0, -e);
-    }
+    const double scale = unit_scale(big);
     const V3 u = {wu[0] * scale, wu[1] * scale, wu[2] * scale}, v = {wv[0] * scale, wv[1] * scale, wv[2] * scale},
              q = {wq[0] * scale, wq[1] * scale, wq[2] * scale};
     double dist = 0;

@@ -379,7 +379,7 @@ bool has_check(const VerifyReport& r, const std::string& check) {
 }  // namespace
 
 TEST(Reproducers, VerifierAcceptsAndStillChecksDegenerateParents) {
-    for (double s : {1.0, 1e-300, 1e300}) {
+    for (double s : {1.0, 1e-300, 1e300, 1e-310}) {
         SCOPED_TRACE("scale " + std::to_string(s));
         VerifyInput v = split_needle(s);
         EXPECT_TRUE(verify(v).ok()) << verify(v).to_string();
