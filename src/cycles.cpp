@@ -2,6 +2,7 @@
 #include "singlestrip/cycles.hpp"
 
 #include <algorithm>
+#include <numeric>
 #include <cmath>
 #include <iomanip>
 #include <limits>
@@ -173,8 +174,11 @@ Cycles compute_fundamental_cycles(const StripResult& result) {
         if (cand.empty())
             throw InternalError("fundamental cycles: no path around the fundamental triangle at position " +
                                 std::to_string(p));
-        std::stable_sort(cand.begin(), cand.end(),
-                         [](const Candidate& u, const Candidate& v) { return u.faces.size() < v.faces.size(); });
+        // Shortest first, ties in candidate order. (A stable insertion sort: a handful of
+        // candidates; std::stable_sort's temporary buffer trips ASan's alloc-dealloc check in
+        // GCC 12's libstdc++.)
+        for (size_t x = 1; x < cand.size(); ++x)
+            for (size_t y = x; y > 0 && cand[y].faces.size() < cand[y - 1].faces.size(); --y) std::swap(cand[y], cand[y - 1]);
     }
 
     // Shortcuts and strip segments can be null-homologous or dependent (a steepest ascent that
@@ -220,7 +224,17 @@ Cycles compute_fundamental_cycles(const StripResult& result) {
     std::vector<Candidate> extra;
     if (rank < dim) {
         std::vector<std::vector<uint32_t>> gens = tree_cotree_generators(mesh);
-        std::stable_sort(gens.begin(), gens.end(), [](const auto& u, const auto& v) { return u.size() < v.size(); });
+        {  // shortest first, ties in generator order (see above for why not std::stable_sort)
+            std::vector<size_t> by_size(gens.size());
+            std::iota(by_size.begin(), by_size.end(), size_t{0});
+            std::sort(by_size.begin(), by_size.end(), [&](size_t u, size_t v) {
+                return gens[u].size() != gens[v].size() ? gens[u].size() < gens[v].size() : u < v;
+            });
+            std::vector<std::vector<uint32_t>> sorted;
+            sorted.reserve(gens.size());
+            for (size_t k : by_size) sorted.push_back(std::move(gens[k]));
+            gens = std::move(sorted);
+        }
         size_t next = 0;
         for (size_t i : pending) {
             while (next < gens.size() && !insert(classifier.classify(gens[next]))) ++next;

@@ -417,6 +417,12 @@ std::optional<Refusal> prescan_off(std::string_view d) {
     const bool off = kw.substr(j) == "OFF";
     if (!off && kw.substr(j) != "SKEL") return std::nullopt;  // CGAL refuses the header itself
     (void)colours;
+    // CGAL 5.5's scanner crashes on malformed texture-coordinate records (found by fuzzing:
+    // File_scanner_OFF::scan_texture) and 4D / n-D vertices are not surfaces we can strip.
+    if (textures || homogeneous || dimensional)
+        return Refusal{"unsupported OFF variant '" + std::string(kw) +
+                           "' (texture, homogeneous or n-dimensional coordinates); plain OFF, COFF, NOFF and CNOFF are read",
+                       false};
 
     skip_comment();
     if (p >= n) return std::nullopt;
