@@ -112,8 +112,8 @@ SplitResult Mesh::split_edge(uint32_t h) {
     const uint32_t t = twin_[h];
     const uint32_t f = face(h), g = face(t);
     const uint32_t a = from(h), b = to(h), c = opposite(h), d = opposite(t);
-    const uint32_t hn = next(h), hp = prev(h);  // b->c, c->a in f
-    const uint32_t tn = next(t), tp = prev(t);  // a->d, d->b in g
+    const uint32_t hn = next(h);  // b->c in f (prev(h), c->a, stays)
+    const uint32_t tn = next(t);  // a->d in g (prev(t), d->b, stays)
     const uint32_t twin_bc = twin_[hn], twin_ad = twin_[tn];
 
     const auto& pa = points_[a];
@@ -133,8 +133,6 @@ SplitResult Mesh::split_edge(uint32_t h) {
     corner_vertex_[hn] = mid;
     // g = (b, mid, d): t: b->mid, tn: mid->d, tp: d->b (unchanged)
     corner_vertex_[tn] = mid;
-    (void)hp;
-    (void)tp;
 
     auto link = [&](uint32_t x, uint32_t y) {
         twin_[x] = y;
