@@ -49,30 +49,11 @@ bool wanted(std::string_view s) {
     }
 }
 
-/// OPEN finding F12 (docs/reliability.md, fuzz/repro/off_zero_padded_*): read_mesh.cpp's OFF
-/// pre-scan gives up on a number of >= 19 digits that CGAL reads (e.g. a zero-padded count), and
-/// CGAL then trusts the file. Skipped (-1) until fixed, unless SINGLESTRIP_FUZZ_STRICT=1.
-bool open_finding(std::string_view s) {
-    if (kFormat != kOff) return false;
-    static const bool strict = [] {
-        const char* e = std::getenv("SINGLESTRIP_FUZZ_STRICT");
-        return e && *e && *e != '0';
-    }();
-    if (strict) return false;
-    size_t run = 0;
-    for (char c : s) {
-        run = (c >= '0' && c <= '9') ? run + 1 : 0;
-        if (run >= 19) return true;
-    }
-    return false;
-}
-
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     using namespace singlestrip;
     if (!wanted(std::string_view(reinterpret_cast<const char*>(data), size))) return -1;
-    if (open_finding(std::string_view(reinterpret_cast<const char*>(data), size))) return -1;
     const std::string path = fuzzcheck::write_temp(data, size, extension());
     TriangleSoup soup;
     try {

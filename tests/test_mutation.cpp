@@ -317,21 +317,13 @@ std::string check_file_isolated(const fs::path& path) {
 }  // namespace
 
 TEST(Reproducers, EveryReproducerMeshIsRefusedOrVerified) {
-    // OPEN finding F12 (docs/reliability.md): src/io/read_mesh.cpp's OFF pre-scan gives up on a
-    // count with >= 19 digits (zero-padded) that CGAL reads, so its checks are bypassed.
-    // Skipped, and said so, until it is fixed; then delete this list.
-    const std::vector<std::string> open = {"off_zero_padded_count_negative_corners_ub.off", "off_zero_padded_huge_count.off"};
     size_t meshes = 0;
     for (const auto& f : repro_files()) {
         if (!is_mesh(f)) continue;
-        if (std::find(open.begin(), open.end(), f.filename().string()) != open.end()) {
-            std::printf("  skipped %s (open finding F12)\n", f.filename().string().c_str());
-            continue;
-        }
         ++meshes;
         EXPECT_EQ(check_file_isolated(f), "") << f.filename().string();
     }
-    EXPECT_GE(meshes, 12u) << "fuzz/repro/ should hold the reproducers of F1-F10";
+    EXPECT_GE(meshes, 15u) << "fuzz/repro/ should hold the reproducers of F1-F13";
 }
 
 TEST(Reproducers, PipelineReproducersVerify) {

@@ -325,6 +325,8 @@ std::size_t end_of_line(std::string_view d, std::size_t p) {
 /// A whole token that is a non-negative decimal integer (optional '+'), below 10^18.
 bool clean_unsigned(std::string_view t, unsigned long long& v) {
     if (!t.empty() && t[0] == '+') t.remove_prefix(1);
+    // Leading zeros are digits CGAL's `>>` reads too (F12: "0000000000000000000003").
+    while (t.size() > 1 && t[0] == '0' && t[1] >= '0' && t[1] <= '9') t.remove_prefix(1);
     if (t.empty() || t.size() > 18) return false;
     v = 0;
     for (char c : t) {
@@ -427,11 +429,16 @@ std::optional<Refusal> prescan_off(std::string_view d) {
     skip_comment();
     if (p >= n) return std::nullopt;
     long long nv = 0, nf = 0, nh = 0;
+    // CGAL reads the counts into int and computes 2 * edges (F13): anything the scan cannot read
+    // as an int, or an edge count beyond 2^30, is refused here rather than handed over.
+    const Refusal bad_counts{"malformed OFF header: the vertex, face and edge counts must be integers in [0, 2^31)", true};
+    constexpr long long kMaxEdges = 1LL << 30;
     if (d[p] >= '0' && d[p] <= '9') {
-        if (!read_int(nv)) return std::nullopt;
-        if (dimensional && !read_int(nv)) return std::nullopt;
-        if (!read_int(nf) || nf < 0) return std::nullopt;
-        if (off && !read_int(nh)) return std::nullopt;
+        if (!read_int(nv)) return bad_counts;
+        if (dimensional && !read_int(nv)) return bad_counts;
+        if (!read_int(nf) || nf < 0) return bad_counts;
+        if (off && (!read_int(nh) || nh < 0 || nh > kMaxEdges))
+            return Refusal{"malformed OFF header: edge count out of range [0, 2^30]", true};
     } else {
         const std::size_t b = p++;
         while (p < n && p - b < 41 && std::isalnum(static_cast<unsigned char>(d[p]))) ++p;
@@ -446,7 +453,8 @@ std::optional<Refusal> prescan_off(std::string_view d) {
         };
         if (dimensional && !be32(nv)) return std::nullopt;
         if (!be32(nv) || !be32(nf) || nf < 0) return std::nullopt;
-        if (off && !be32(nh)) return std::nullopt;
+        if (off && (!be32(nh) || nh < 0 || nh > kMaxEdges))
+            return Refusal{"malformed binary OFF header: edge count out of range [0, 2^30]", false};
         if (nv < 0) return Refusal{"malformed OFF header: negative vertex count " + std::to_string(nv), false};
         (void)nh;
         // Binary: a vertex is at least 3 floats, a face at least 4 ints.
