@@ -12,6 +12,11 @@
 //     tolerance 1e-9 relative to the parent's size), is not degenerate, and has the parent's
 //     orientation; per parent the children's areas sum to the parent's area (relative 1e-9);
 //     every input face has at least one child;
+//     Nearly degenerate parents (|normal| <= 1e-6 size^2, where barycentric coordinates are
+//     ill-conditioned; zero-area faces included) get a robust test instead: every child vertex
+//     within the parent's bounding box and within its height of its longest edge, no child
+//     larger than the parent, areas unsigned, orientation not checked (reported as a note).
+//     Coordinates are scaled by a power of two per face first, so huge or tiny ones are exact.
 //   * conforming oriented manifold: no repeated vertex in a face, no duplicate face, every edge
 //     in at most two faces traversed in opposite directions, every vertex one fan, no
 //     T-junction (every output edge with one face lies on an input boundary edge and the output
