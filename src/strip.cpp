@@ -122,6 +122,8 @@ private:
     bool try_detour(uint32_t region, uint32_t anchor);
     uint32_t choose_seed() const;
     uint32_t find_edge(uint32_t u, uint32_t v) const;
+    template <class Fn>
+    bool for_each_outgoing(uint32_t v, Fn&& fn) const;
     uint32_t face_at_vertex(uint32_t v, uint32_t avoid) const;
     void apply_constraints();
     [[nodiscard]] bool has_vertex(uint32_t f, uint32_t v) const {
@@ -628,18 +630,18 @@ uint32_t Builder::choose_seed() const {
     return best;
 }
 
-// Finds the half-edge u->v or v->u, or kNone. O(degree of u).
-uint32_t Builder::find_edge(uint32_t u, uint32_t v) const {
-    if (u >= mesh_.num_vertices() || v >= mesh_.num_vertices()) return kNone;
-    const uint32_t h0 = mesh_.vertex_halfedge(u);
-    if (h0 == kNone) return kNone;
-    // Rotate both ways around u (the fan may be open).
+// Calls fn(h) for every half-edge h leaving v, once each, until fn returns true (then returns
+// true). Rotates both ways from v's half-edge, since the fan may be open. O(degree of v).
+template <class Fn>
+bool Builder::for_each_outgoing(uint32_t v, Fn&& fn) const {
+    const uint32_t h0 = mesh_.vertex_halfedge(v);
+    if (h0 == kNone) return false;
     uint32_t h = h0;
     for (uint32_t guard = 0; guard <= mesh_.num_halfedges(); ++guard) {
-        if (mesh_.to(h) == v) return h;
-        if (mesh_.from(Mesh::prev(h)) == v) return Mesh::prev(h);
+        if (fn(h)) return true;
         const uint32_t t = mesh_.twin(Mesh::prev(h));
-        if (t == kNone || t == h0) break;
+        if (t == kNone) break;
+        if (t == h0) return false;  // closed fan: every half-edge seen
         h = t;
     }
     h = h0;
@@ -648,10 +650,21 @@ uint32_t Builder::find_edge(uint32_t u, uint32_t v) const {
         if (t == kNone) break;
         h = Mesh::next(t);
         if (h == h0) break;
-        if (mesh_.to(h) == v) return h;
-        if (mesh_.from(Mesh::prev(h)) == v) return Mesh::prev(h);
+        if (fn(h)) return true;
     }
-    return kNone;
+    return false;
+}
+
+// Finds the half-edge u->v or v->u, or kNone. O(degree of u).
+uint32_t Builder::find_edge(uint32_t u, uint32_t v) const {
+    if (u >= mesh_.num_vertices() || v >= mesh_.num_vertices()) return kNone;
+    uint32_t found = kNone;
+    for_each_outgoing(u, [&](uint32_t h) {
+        if (mesh_.to(h) == v) found = h;
+        else if (mesh_.from(Mesh::prev(h)) == v) found = Mesh::prev(h);
+        return found != kNone;
+    });
+    return found;
 }
 
 void Builder::apply_constraints() {
@@ -704,11 +717,9 @@ void Builder::apply_constraints() {
 // A face incident to vertex v, preferring faces with more blocked sides; `avoid` is skipped
 // when another face exists. kNone if v has no face.
 uint32_t Builder::face_at_vertex(uint32_t v, uint32_t avoid) const {
-    const uint32_t h0 = mesh_.vertex_halfedge(v);
-    if (h0 == kNone) return kNone;
     uint32_t best = kNone;
     int best_score = -1;
-    auto consider = [&](uint32_t h) {
+    for_each_outgoing(v, [&](uint32_t h) {
         const uint32_t f = Mesh::face(h);
         int score = 0;
         for (uint32_t k = 0; k < 3; ++k) score += !passable(3 * f + k);
@@ -717,22 +728,8 @@ uint32_t Builder::face_at_vertex(uint32_t v, uint32_t avoid) const {
             best_score = score;
             best = f;
         }
-    };
-    uint32_t h = h0;
-    for (uint32_t guard = 0; guard <= mesh_.num_halfedges(); ++guard) {
-        consider(h);
-        const uint32_t t = mesh_.twin(Mesh::prev(h));
-        if (t == kNone || t == h0) break;
-        h = t;
-    }
-    h = h0;
-    for (uint32_t guard = 0; guard <= mesh_.num_halfedges(); ++guard) {
-        const uint32_t t = mesh_.twin(h);
-        if (t == kNone) break;
-        h = Mesh::next(t);
-        if (h == h0) break;
-        consider(h);
-    }
+        return false;
+    });
     return best;
 }
 
