@@ -418,7 +418,6 @@ std::optional<Refusal> prescan_off(std::string_view d) {
     if (dimensional) ++j;
     const bool off = kw.substr(j) == "OFF";
     if (!off && kw.substr(j) != "SKEL") return std::nullopt;  // CGAL refuses the header itself
-    (void)colours;
     // CGAL 5.5's scanner crashes on malformed texture-coordinate records (found by fuzzing:
     // File_scanner_OFF::scan_texture) and 4D / n-D vertices are not surfaces we can strip.
     if (textures || homogeneous || dimensional)
@@ -492,11 +491,33 @@ std::optional<Refusal> prescan_off(std::string_view d) {
                            " faces, which need at least " + std::to_string(6 * nv + 8 * nf) + " bytes, but the file has only " + std::to_string(n),
                        true};
     // CGAL reads one vertex per line, then one face per line (comment lines and blank lines skipped).
+    // With colours or normals, CGAL indexes the line's numbers without checking how many there
+    // are (heap overflow in File_scanner_OFF::scan_color, found by fuzzing: F14), so those lines
+    // must hold exactly x y z [nx ny nz] r g b [a], all numbers.
+    const std::size_t base = 3 + (normals ? 3 : 0);
     for (long long v = 0; v < nv; ++v) {
         skip_comment();
         if (p >= n)
             return Refusal{"truncated OFF file: header declares " + std::to_string(nv) + " vertices but only " + std::to_string(v) + " were found", true};
-        p = end_of_line(d, p) + 1;
+        std::size_t end = end_of_line(d, p);
+        const std::size_t next = end + 1;
+        if (colours || normals) {
+            const std::size_t line_start = p;
+            if (const void* hash = std::memchr(d.data() + p, '#', end - p)) end = static_cast<std::size_t>(static_cast<const char*>(hash) - d.data());
+            std::size_t tokens = 0;
+            for (std::string_view t = next_token(d, p, end); !t.empty(); t = next_token(d, p, end)) {
+                double x = 0;
+                if (!clean_double(t, x))
+                    return Refusal{"line " + std::to_string(line_of(d, line_start)) + ": vertex " + std::to_string(v) + ": bad number '" + std::string(t) + "'", false};
+                ++tokens;
+            }
+            const bool ok = colours ? (tokens == base + 3 || tokens == base + 4) : tokens == base;
+            if (!ok)
+                return Refusal{"line " + std::to_string(line_of(d, line_start)) + ": vertex " + std::to_string(v) + " has " + std::to_string(tokens) +
+                                   " numbers; a " + std::string(kw) + " vertex needs " + std::to_string(base) + (colours ? " plus 3 or 4 colour components" : ""),
+                               false};
+        }
+        p = next;
     }
     for (long long f = 0; f < nf; ++f) {
         skip_comment();
