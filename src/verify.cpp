@@ -137,23 +137,32 @@ Adjacency build_adjacency(size_t num_points, const std::vector<Triangle>& faces,
         }
         a.face_ok[f] = ok;
     }
-    // Outgoing half-edges per vertex (counting sort), each bucket sorted by target.
+    // Outgoing half-edges per vertex, each bucket ordered by (target, id): a stable counting sort
+    // by target, then one by source (linear; a comparison sort per bucket was verify's largest cost).
+    std::vector<uint32_t> by_to;
+    {
+        std::vector<uint32_t> count(num_points + 1, 0);
+        for (uint32_t f = 0; f < F; ++f)
+            if (a.face_ok[f])
+                for (uint32_t v : faces[f]) ++count[v + 1];
+        for (size_t v = 0; v < num_points; ++v) count[v + 1] += count[v];
+        by_to.resize(count[num_points]);
+        for (uint32_t f = 0; f < F; ++f)
+            if (a.face_ok[f])
+                for (uint32_t i = 0; i < 3; ++i) by_to[count[faces[f][(i + 1) % 3]]++] = 3 * f + i;
+    }
     a.out_offset.assign(num_points + 1, 0);
-    for (uint32_t f = 0; f < F; ++f)
-        if (a.face_ok[f])
-            for (uint32_t v : faces[f]) ++a.out_offset[v + 1];
+    for (uint32_t h : by_to) ++a.out_offset[a.from(h) + 1];
     for (size_t v = 0; v < num_points; ++v) a.out_offset[v + 1] += a.out_offset[v];
     a.out_he.resize(a.out_offset[num_points]);
     {
         std::vector<uint32_t> fill(a.out_offset.begin(), a.out_offset.end() - 1);
-        for (uint32_t f = 0; f < F; ++f)
-            if (a.face_ok[f])
-                for (uint32_t i = 0; i < 3; ++i) a.out_he[fill[faces[f][i]]++] = 3 * f + i;
+        for (uint32_t h : by_to) a.out_he[fill[a.from(h)]++] = h;
     }
+    by_to = {};
     std::vector<bool> canonical(3 * F, false);  // first half-edge of its (from,to) group
     for (size_t v = 0; v < num_points; ++v) {
         auto first = a.out_he.begin() + a.out_offset[v], last = a.out_he.begin() + a.out_offset[v + 1];
-        std::sort(first, last, [&](uint32_t x, uint32_t y) { return a.to(x) != a.to(y) ? a.to(x) < a.to(y) : x < y; });
         for (auto it = first; it != last; ++it) {
             if (it != first && a.to(*it) == a.to(*(it - 1))) {
                 const uint32_t h = *it, g = *(it - 1);
