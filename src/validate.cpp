@@ -95,34 +95,9 @@ struct Analysis {
             }
         }
         referenced = static_cast<uint64_t>(std::count(used.begin(), used.end(), 1));
-        find_duplicates();
         group_edges();
         find_fans();
         orient_bfs();
-    }
-
-    void find_duplicates() {
-        std::vector<std::pair<Triangle, uint32_t>> keyed;
-        keyed.reserve(nf);
-        for (std::size_t f = 0; f < nf; ++f) {
-            if (!usable[f]) continue;
-            Triangle t = soup.triangles[f];
-            std::sort(t.begin(), t.end());
-            keyed.push_back({t, static_cast<uint32_t>(f)});
-        }
-        std::sort(keyed.begin(), keyed.end());
-        for (std::size_t i = 0; i < keyed.size();) {
-            std::size_t j = i + 1;
-            while (j < keyed.size() && keyed[j].first == keyed[i].first) ++j;
-            if (j - i > 1) {
-                std::string faces;
-                for (std::size_t k = i; k < j; ++k) faces += (k > i ? ", " : "") + std::to_string(keyed[k].second);
-                const auto& t = keyed[i].first;
-                duplicate.add("faces " + faces + " are duplicates (same vertices " + std::to_string(t[0]) + ", " + std::to_string(t[1]) +
-                              ", " + std::to_string(t[2]) + ")");
-            }
-            i = j;
-        }
     }
 
     // Usable half-edges ordered by (smaller endpoint, larger endpoint, id): equal neighbours form
@@ -196,6 +171,7 @@ struct Analysis {
                  UnionFind& bverts, std::vector<char>& on_boundary) {
         ++edges;
         const auto n = static_cast<std::size_t>(e - b);
+        if (n >= 2) report_duplicates(lo, hi, b, e);
         for (auto i = b + 1; i < e; ++i) {
             faces.unite(*b / 3, *i / 3);
             corners_->unite(corner_at(*b, lo), corner_at(*i, lo));
@@ -222,27 +198,47 @@ struct Analysis {
         }
     }
 
-    // A vertex is manifold when all its corners are joined through edges at it into one fan.
-    void find_fans() {
-        std::vector<std::pair<uint32_t, uint32_t>> vertex_root;
-        vertex_root.reserve(3 * nf);
-        for (std::size_t f = 0; f < nf; ++f)
-            if (usable[f])
-                for (int k = 0; k < 3; ++k) {
-                    auto c = static_cast<uint32_t>(3 * f + static_cast<std::size_t>(k));
-                    vertex_root.emplace_back(from(c), corners_->find(c));
-                }
-        corners_.reset();
-        std::sort(vertex_root.begin(), vertex_root.end());
-        vertex_root.erase(std::unique(vertex_root.begin(), vertex_root.end()), vertex_root.end());
-        for (std::size_t i = 0; i < vertex_root.size();) {
+    uint32_t third(uint32_t h) const { return soup.triangles[h / 3][(h % 3 + 2) % 3]; }
+
+    // Duplicate faces share all three edges; each set is reported once, at the edge of its two
+    // smallest vertices (lo, hi): the faces there whose third vertex is above hi, grouped by it.
+    // Edges come in (lo, hi) order and groups in third-vertex order, so the report is ordered by
+    // sorted vertex triple, faces ascending, without sorting the faces.
+    void report_duplicates(uint32_t lo, uint32_t hi, std::vector<uint32_t>::iterator b, std::vector<uint32_t>::iterator e) {
+        std::vector<std::pair<uint32_t, uint32_t>> by_third;  // (third vertex, face), usually 2 entries
+        for (auto i = b; i != e; ++i)
+            if (third(*i) > hi) by_third.emplace_back(third(*i), *i / 3);
+        if (by_third.size() < 2) return;
+        std::sort(by_third.begin(), by_third.end());
+        for (std::size_t i = 0; i < by_third.size();) {
             std::size_t j = i + 1;
-            while (j < vertex_root.size() && vertex_root[j].first == vertex_root[i].first) ++j;
-            if (j - i > 1)
-                nm_vertex.add("vertex " + std::to_string(vertex_root[i].first) + " is where " + std::to_string(j - i) +
-                              " separate fans of faces meet (non-manifold vertex)");
+            while (j < by_third.size() && by_third[j].first == by_third[i].first) ++j;
+            if (j - i > 1) {
+                std::string faces;
+                for (std::size_t k = i; k < j; ++k) faces += (k > i ? ", " : "") + std::to_string(by_third[k].second);
+                duplicate.add("faces " + faces + " are duplicates (same vertices " + std::to_string(lo) + ", " + std::to_string(hi) +
+                              ", " + std::to_string(by_third[i].first) + ")");
+            }
             i = j;
         }
+    }
+
+    // A vertex is manifold when all its corners are joined through edges at it into one fan.
+    // Corners are only ever joined with corners at the same vertex, so each union-find set lies
+    // at one vertex and the number of fans at v is the number of set roots among its corners.
+    void find_fans() {
+        std::vector<uint32_t> fans(nv, 0);
+        for (std::size_t f = 0; f < nf; ++f)
+            if (usable[f])
+                for (uint32_t k = 0; k < 3; ++k) {
+                    const auto c = static_cast<uint32_t>(3 * f + k);
+                    if (corners_->find(c) == c) ++fans[from(c)];
+                }
+        corners_.reset();
+        for (std::size_t v = 0; v < nv; ++v)
+            if (fans[v] > 1)
+                nm_vertex.add("vertex " + std::to_string(v) + " is where " + std::to_string(fans[v]) +
+                              " separate fans of faces meet (non-manifold vertex)");
     }
 
     // BFS from the lowest-numbered face of each component; flip[g] = flip[f] xor (same direction).

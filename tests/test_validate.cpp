@@ -2,6 +2,10 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
+#include <map>
+#include <numeric>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -227,4 +231,125 @@ TEST(DiagnoseReal, InfoMatchesKnownTopology) {
         EXPECT_EQ(m.genus, c.genus);
         EXPECT_EQ(m.boundary_loops, c.loops);
     }
+}
+
+namespace {
+
+std::vector<std::string> messages_of(const std::vector<SoupProblem>& ps, const std::string& kind) {
+    std::vector<std::string> m;
+    for (const auto& p : ps)
+        if (p.kind == kind) m.push_back(p.message);
+    return m;
+}
+
+// Brute-force references for the linear-time duplicate and fan detection in validate.cpp.
+std::vector<std::string> reference_duplicates(const TriangleSoup& s) {
+    std::map<std::array<uint32_t, 3>, std::vector<size_t>> groups;  // ordered by sorted triple
+    for (size_t f = 0; f < s.triangles.size(); ++f) {
+        auto t = s.triangles[f];
+        if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) continue;
+        if (std::max({t[0], t[1], t[2]}) >= s.points.size()) continue;
+        std::array<uint32_t, 3> key{t[0], t[1], t[2]};
+        std::sort(key.begin(), key.end());
+        groups[key].push_back(f);
+    }
+    std::vector<std::string> out;
+    for (const auto& [key, faces] : groups) {
+        if (faces.size() < 2) continue;
+        std::string list;
+        for (size_t i = 0; i < faces.size(); ++i) list += (i ? ", " : "") + std::to_string(faces[i]);
+        out.push_back("faces " + list + " are duplicates (same vertices " + std::to_string(key[0]) + ", " + std::to_string(key[1]) +
+                      ", " + std::to_string(key[2]) + ")");
+    }
+    return out;
+}
+
+std::vector<std::string> reference_fans(const TriangleSoup& s) {
+    std::vector<std::string> out;
+    const auto usable = [&](const Triangle& t) {
+        return t[0] != t[1] && t[1] != t[2] && t[0] != t[2] && std::max({t[0], t[1], t[2]}) < s.points.size();
+    };
+    for (uint32_t v = 0; v < s.points.size(); ++v) {
+        std::vector<size_t> at;  // usable faces at v
+        for (size_t f = 0; f < s.triangles.size(); ++f)
+            if (usable(s.triangles[f]) && std::find(s.triangles[f].begin(), s.triangles[f].end(), v) != s.triangles[f].end()) at.push_back(f);
+        std::vector<size_t> comp(at.size());
+        std::iota(comp.begin(), comp.end(), size_t{0});
+        // Faces at v sharing an edge (v, w) are in one fan; relabel until stable (tiny inputs).
+        for (bool changed = true; changed;) {
+            changed = false;
+            for (size_t i = 0; i < at.size(); ++i)
+                for (size_t j = 0; j < at.size(); ++j) {
+                    if (comp[i] == comp[j]) continue;
+                    bool share = false;
+                    for (uint32_t w : s.triangles[at[i]])
+                        if (w != v && std::find(s.triangles[at[j]].begin(), s.triangles[at[j]].end(), w) != s.triangles[at[j]].end()) share = true;
+                    if (share) {
+                        const size_t lo = std::min(comp[i], comp[j]);
+                        comp[i] = comp[j] = lo;
+                        changed = true;
+                    }
+                }
+        }
+        std::sort(comp.begin(), comp.end());
+        const auto fans = static_cast<size_t>(std::unique(comp.begin(), comp.end()) - comp.begin());
+        if (fans > 1)
+            out.push_back("vertex " + std::to_string(v) + " is where " + std::to_string(fans) + " separate fans of faces meet (non-manifold vertex)");
+    }
+    return out;
+}
+
+}  // namespace
+
+// The duplicate-face and fan reports come from linear passes over the edge groups; they must
+// list exactly what a brute-force search finds, in the same order, on random (mostly broken)
+// soups. prepare_soup with orient (one analysis) must also agree with orient_soup followed by
+// validate_soup (two analyses).
+TEST(Diagnose, DuplicatesFansAndOrientMatchBruteForceOnRandomSoups) {
+    std::mt19937 rng(20261122);
+    size_t with_duplicates = 0, with_fans = 0, accepted = 0;
+    for (int iter = 0; iter < 3000; ++iter) {
+        TriangleSoup s;
+        const uint32_t nv = 3 + rng() % 6;
+        for (uint32_t v = 0; v < nv; ++v) s.points.push_back({double(v), double(v * v % 7), double(v % 3)});
+        const size_t nf = 1 + rng() % 9;
+        for (size_t f = 0; f < nf; ++f) {
+            if (f > 0 && rng() % 4 == 0) {  // repeat an earlier face, sometimes reversed or rotated
+                Triangle t = s.triangles[rng() % f];
+                if (rng() % 2) std::swap(t[1], t[2]);
+                if (rng() % 2) std::rotate(t.begin(), t.begin() + 1, t.end());
+                s.triangles.push_back(t);
+            } else {
+                s.triangles.push_back({uint32_t(rng() % nv), uint32_t(rng() % nv), uint32_t(rng() % (nv + (rng() % 8 == 0)))});
+            }
+        }
+        const auto ps = diagnose_soup(s);
+        const auto dup = reference_duplicates(s), fans = reference_fans(s);
+        if (dup.size() <= 10) {
+            EXPECT_EQ(messages_of(ps, "duplicate_face"), dup) << "iteration " << iter;
+        }
+        if (fans.size() <= 10) {
+            EXPECT_EQ(messages_of(ps, "non_manifold_vertex"), fans) << "iteration " << iter;
+        }
+        with_duplicates += !dup.empty();
+        with_fans += !fans.empty();
+
+        TriangleSoup two = s;
+        std::string expected = "(no error)";
+        orient_soup(two);
+        try {
+            validate_soup(two, "x");
+        } catch (const InputError& e) {
+            expected = e.what();
+        }
+        EXPECT_EQ(prepare_error(s, "x", true), expected) << "iteration " << iter;
+        if (expected == "(no error)") {
+            ++accepted;
+            EXPECT_EQ(prepare_soup(s, PrepareOptions{true}, "x").triangles, two.triangles) << "iteration " << iter;
+        }
+    }
+    // The generator must exercise every branch.
+    EXPECT_GT(with_duplicates, 300u);
+    EXPECT_GT(with_fans, 300u);
+    EXPECT_GT(accepted, 100u);
 }

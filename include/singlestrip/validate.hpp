@@ -29,7 +29,7 @@ struct SoupProblem {
 /// Orientation is checked by BFS propagation over manifold edges: an edge traversed in the same
 /// direction by both faces is "inconsistent_orientation"; if no flipping of faces can make the
 /// surface consistent, "non_orientable" is reported as well.
-/// Complexity O(F log F).
+/// Complexity O(V + F log F) worst case (union-find with path halving; no sort of the whole soup), linear in practice.
 std::vector<SoupProblem> diagnose_soup(const TriangleSoup& soup);
 
 struct PrepareOptions {
@@ -42,14 +42,14 @@ struct PrepareOptions {
 /// Flipping face (a,b,c) gives (a,c,b); face order and vertex indices never change.
 /// \throw InputError whose message is "<filename_for_messages>: " followed by the first problems
 ///        (up to 5, "; "-separated, with a count of the rest). A non-orientable surface is always
-///        an error. Complexity O(F log F).
+///        an error. Complexity O(V + F log F) worst case (union-find with path halving; no sort of the whole soup), linear in practice.
 TriangleSoup prepare_soup(TriangleSoup soup, const PrepareOptions& opt, const std::string& filename_for_messages);
 
 /// Flips faces so that every component is consistently oriented, keeping the orientation of
 /// each component's lowest-numbered face (flipping (a,b,c) gives (a,c,b)). Faces that are out of
 /// range or repeat a vertex are left alone; orientation propagates only across edges with
 /// exactly two faces. Returns the number of faces flipped, or -1 (soup unchanged) if some
-/// component is not orientable. Complexity O(F log F).
+/// component is not orientable. Complexity O(V + F log F) worst case (union-find with path halving; no sort of the whole soup), linear in practice.
 long long orient_soup(TriangleSoup& soup);
 
 /// Throws like prepare_soup() without re-orienting; convenience for callers with a soup.
@@ -78,7 +78,7 @@ struct MeshInfo {
     [[nodiscard]] bool valid() const noexcept { return problems.empty(); }
 };
 
-/// Computes MeshInfo. Complexity O(F log F).
+/// Computes MeshInfo. Complexity O(V + F log F) worst case (union-find with path halving; no sort of the whole soup), linear in practice.
 MeshInfo mesh_info(const TriangleSoup& soup);
 
 }  // namespace singlestrip
