@@ -429,15 +429,15 @@ std::optional<Refusal> prescan_off(std::string_view d) {
     if (p >= n) return std::nullopt;
     long long nv = 0, nf = 0, nh = 0;
     // CGAL reads the counts into int and computes 2 * edges (F13): anything the scan cannot read
-    // as an int, or an edge count beyond 2^30, is refused here rather than handed over.
+    // as an int, or an edge count of 2^30 or more (2 * 2^30 overflows int: F15), is refused here.
     const Refusal bad_counts{"malformed OFF header: the vertex, face and edge counts must be integers in [0, 2^31)", true};
-    constexpr long long kMaxEdges = 1LL << 30;
+    constexpr long long kMaxEdges = (1LL << 30) - 1;
     if (d[p] >= '0' && d[p] <= '9') {
         if (!read_int(nv)) return bad_counts;
         if (dimensional && !read_int(nv)) return bad_counts;
         if (!read_int(nf) || nf < 0) return bad_counts;
         if (off && (!read_int(nh) || nh < 0 || nh > kMaxEdges))
-            return Refusal{"malformed OFF header: edge count out of range [0, 2^30]", true};
+            return Refusal{"malformed OFF header: edge count out of range [0, 2^30)", true};
     } else {
         const std::size_t b = p++;
         while (p < n && p - b < 41 && std::isalnum(static_cast<unsigned char>(d[p]))) ++p;
@@ -453,7 +453,7 @@ std::optional<Refusal> prescan_off(std::string_view d) {
         if (dimensional && !be32(nv)) return std::nullopt;
         if (!be32(nv) || !be32(nf) || nf < 0) return std::nullopt;
         if (off && (!be32(nh) || nh < 0 || nh > kMaxEdges))
-            return Refusal{"malformed binary OFF header: edge count out of range [0, 2^30]", false};
+            return Refusal{"malformed binary OFF header: edge count out of range [0, 2^30)", false};
         if (nv < 0) return Refusal{"malformed OFF header: negative vertex count " + std::to_string(nv), false};
         (void)nh;
         // Binary: a vertex is at least 3 floats, a face at least 4 ints.
