@@ -180,6 +180,32 @@ TEST(ReadLimits, ValidOffVariantsStillRead) {
     EXPECT_EQ(triangles_of("OFF\r\n3 1 0\r\n0 0 0\r\n1 0 0\r\n0 1 0\r\n3 0 1 2\r\n", ".off"), 1u);
 }
 
+// CGAL converts COFF colours to unsigned char (or a colour-map index) unchecked and, after one
+// coloured face, reads a colour for every later face without looking at the line (F16).
+TEST(ReadLimits, OffColoursCgalCannotConvertAreRefused) {
+    const std::string v = "COFF\n4 2 0\n";
+    const std::string rest = "1 0 0 0 255 0\n0 1 0 0 0 255\n1 1 0 9 9 9\n";
+    const std::string faces = "3 0 1 2\n3 1 3 2\n";
+    EXPECT_EQ(triangles_of(v + "0 0 0 255 0 0\n" + rest + faces, ".off"), 2u);
+    EXPECT_EQ(triangles_of(v + "0 0 0 0.5 1 0\n" + rest + faces, ".off"), 2u);  // fractions
+    EXPECT_EQ(refused(v + "0 0 0 256 0 0\n" + rest + faces, ".off", {"vertex 0", "256"}), "");
+    EXPECT_EQ(refused(v + "0 0 0 -1 0 0\n" + rest + faces, ".off", {"vertex 0", "-1"}), "");
+    EXPECT_EQ(refused(v + "0 0 0 200 0.5 0\n" + rest + faces, ".off", {"vertex 0", "200"}), "");  // read as fractions
+    EXPECT_EQ(refused(v + "0 0 0 1 0 5.5e23\n" + rest + faces, ".off", {"vertex 0", "5.5e+23"}), "");
+    EXPECT_EQ(refused(v + "0 0 0 nan 0 0\n" + rest + faces, ".off", {"vertex 0", "nan"}), "");
+    const std::string vs = v + "0 0 0 1 2 3\n" + rest;
+    EXPECT_EQ(triangles_of(vs + "3 0 1 2 7\n3 1 3 2 0.5 0.5 0.5 1\n", ".off"), 2u);  // index, then rgba
+    EXPECT_EQ(triangles_of(vs + "3 0 1 2\n3 1 3 2 10 20 30\n", ".off"), 2u);        // colour only later
+    EXPECT_EQ(refused(vs + "3 0 1 2 -5\n3 1 3 2 1\n", ".off", {"face 0", "colour-map index -5"}), "");
+    EXPECT_EQ(refused(vs + "3 0 1 2 1e12\n3 1 3 2 1\n", ".off", {"face 0", "colour-map index"}), "");
+    EXPECT_EQ(refused(vs + "3 0 1 2 5 5\n3 1 3 2\n", ".off", {"face 0", "2 colour numbers"}), "");
+    EXPECT_EQ(refused(vs + "3 0 1 2 300 0 0\n3 1 3 2 1 1 1\n", ".off", {"face 0", "300"}), "");
+    EXPECT_EQ(refused(vs + "3 0 1 2 1 1 1\n3 1 3 2\n", ".off", {"face 1", "no colour"}), "");
+    EXPECT_EQ(refused(vs + "3 0 1 2 1 x 1\n3 1 3 2\n", ".off", {"face 0", "bad colour number 'x'"}), "");
+    // Plain OFF: CGAL ignores numbers after a face's indices, and so do we.
+    EXPECT_EQ(triangles_of("OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n3 0 1 2 -5 1e30\n3 1 3 2\n", ".off"), 2u);
+}
+
 // ---- PLY ---------------------------------------------------------------------------------------
 
 TEST(ReadLimits, PlyAbsurdElementCountsAreRefused) {

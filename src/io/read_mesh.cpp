@@ -377,6 +377,26 @@ std::string_view next_token(std::string_view d, std::size_t& p, std::size_t end)
 
 // ---- OFF ----
 
+/// Shortest text for a number in a message.
+std::string number_text(double x) {
+    std::ostringstream o;
+    o << x;
+    return o.str();
+}
+
+/// Why CGAL's File_scanner_OFF::scan_color cannot convert an r g b triple without undefined
+/// behaviour (F16), or nothing. It takes integers as 0..255 and, if any component is not an
+/// integer, all three as fractions times 255; each result is cast to unsigned char unchecked.
+std::optional<std::string> rgb_colour_problem(const double rgb[3]) {
+    const bool integers = std::floor(rgb[0]) == rgb[0] && std::floor(rgb[1]) == rgb[1] && std::floor(rgb[2]) == rgb[2];
+    for (int i = 0; i < 3; ++i) {
+        const bool ok = integers ? rgb[i] >= 0 && rgb[i] <= 255 : rgb[i] >= 0 && rgb[i] <= 1;
+        if (!ok)
+            return "colour component " + number_text(rgb[i]) + " out of range (colours are three integers in [0, 255] or three fractions in [0, 1])";
+    }
+    return std::nullopt;
+}
+
 std::optional<Refusal> prescan_off(std::string_view d) {
     const std::size_t n = d.size();
     std::size_t p = 0;
@@ -505,10 +525,12 @@ std::optional<Refusal> prescan_off(std::string_view d) {
             const std::size_t line_start = p;
             if (const void* hash = std::memchr(d.data() + p, '#', end - p)) end = static_cast<std::size_t>(static_cast<const char*>(hash) - d.data());
             std::size_t tokens = 0;
+            double rgb[3] = {0, 0, 0};
             for (std::string_view t = next_token(d, p, end); !t.empty(); t = next_token(d, p, end)) {
                 double x = 0;
                 if (!clean_double(t, x))
                     return Refusal{"line " + std::to_string(line_of(d, line_start)) + ": vertex " + std::to_string(v) + ": bad number '" + std::string(t) + "'", false};
+                if (tokens >= base && tokens < base + 3) rgb[tokens - base] = x;
                 ++tokens;
             }
             const bool ok = colours ? (tokens == base + 3 || tokens == base + 4) : tokens == base;
@@ -516,9 +538,13 @@ std::optional<Refusal> prescan_off(std::string_view d) {
                 return Refusal{"line " + std::to_string(line_of(d, line_start)) + ": vertex " + std::to_string(v) + " has " + std::to_string(tokens) +
                                    " numbers; a " + std::string(kw) + " vertex needs " + std::to_string(base) + (colours ? " plus 3 or 4 colour components" : ""),
                                false};
+            if (colours)
+                if (auto why = rgb_colour_problem(rgb))
+                    return Refusal{"line " + std::to_string(line_of(d, line_start)) + ": vertex " + std::to_string(v) + ": " + *why, false};
         }
         p = next;
     }
+    bool face_colours = false;  // CGAL's sticky has_fcolors
     for (long long f = 0; f < nf; ++f) {
         skip_comment();
         if (p >= n)
@@ -540,6 +566,29 @@ std::optional<Refusal> prescan_off(std::string_view d) {
             if (!clean_index(t, idx)) return Refusal{where() + ": bad vertex index '" + std::string(t) + "'", true};
             if (idx >= static_cast<unsigned long long>(nv))
                 return Refusal{"line " + std::to_string(line_of(d, line_start)) + ": " + index_problem(static_cast<std::size_t>(f), static_cast<long long>(idx), static_cast<std::size_t>(nv)), true};
+        }
+        if (colours) {
+            // CGAL reads a COFF face's trailing numbers as its colour and, once one face had a
+            // colour, reads one for every later face without checking the line holds it; it
+            // also converts the numbers to unsigned char or to a colour-map index unchecked
+            // (F16: UB on a component of 5e23). Only colours it can read safely get through.
+            double c[5] = {0, 0, 0, 0, 0};
+            std::size_t count = 0;
+            for (std::string_view t = next_token(d, p, end); !t.empty(); t = next_token(d, p, end)) {
+                double x = 0;
+                if (!clean_double(t, x)) return Refusal{where() + ": bad colour number '" + std::string(t) + "'", false};
+                if (count < 5) c[count] = x;
+                ++count;
+            }
+            if (count == 0 && face_colours)
+                return Refusal{where() + " has no colour, but an earlier face has one (COFF faces after a coloured face need a colour too)", false};
+            if (count == 1 && !(c[0] >= 0 && c[0] <= 2147483647.0))
+                return Refusal{where() + ": colour-map index " + std::string(number_text(c[0])) + " is not in [0, 2^31)", false};
+            if (count == 2 || count > 4)
+                return Refusal{where() + " has " + std::to_string(count) + " colour numbers; a COFF face colour is 1 (colour-map index), 3 or 4 numbers", false};
+            if (count >= 3)
+                if (auto why = rgb_colour_problem(c)) return Refusal{where() + ": " + *why, false};
+            face_colours = face_colours || count > 0;
         }
         p = next;
     }
