@@ -206,6 +206,50 @@ TEST(ReadLimits, OffColoursCgalCannotConvertAreRefused) {
     EXPECT_EQ(triangles_of("OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n3 0 1 2 -5 1e30\n3 1 3 2\n", ".off"), 2u);
 }
 
+// CGAL's stream reads a line's numbers until the first it cannot parse ("nan", "inf", "+-0"),
+// then indexes colours as if all were there (F17: vertex colours, F18: face colours; found by
+// code audit after F16). Only plain decimal numbers pass the pre-scan.
+TEST(ReadLimits, OffNumbersCgalCannotParseAreRefused) {
+    const std::string v = "COFF\n4 2 0\n";
+    const std::string rest = "1 0 0 0 255 0\n0 1 0 0 0 255\n1 1 0 9 9 9\n";
+    const std::string faces = "3 0 1 2\n3 1 3 2\n";
+    EXPECT_EQ(refused(v + "nan 0 0 255 0 0\n" + rest + faces, ".off", {"vertex 0", "'nan'"}), "");
+    EXPECT_EQ(refused(v + "0 0 inf 255 0 0\n" + rest + faces, ".off", {"vertex 0", "'inf'"}), "");
+    EXPECT_EQ(refused(v + "0 +-0 0 255 0 0\n" + rest + faces, ".off", {"vertex 0", "'+-0'"}), "");
+    EXPECT_EQ(refused(v + "0 0 0 255 0 0 infinity\n" + rest + faces, ".off", {"vertex 0", "'infinity'"}), "");
+    EXPECT_EQ(refused("CNOFF\n3 1 0\n0 0 0 nan 0 1 255 0 0\n1 0 0 0 0 1 0 255 0\n0 1 0 0 0 1 0 0 255\n3 0 1 2\n", ".off", {"vertex 0", "'nan'"}), "");
+    const std::string vs = v + "0 0 0 1 2 3 1e30\n" + rest;
+    EXPECT_EQ(refused(vs + "3 0 1 2 1 1 +-0\n3 1 3 2\n", ".off", {"face 0", "'+-0'"}), "");
+    EXPECT_EQ(refused(vs + "3 0 1 2 5\n3 1 3 2 +-0\n", ".off", {"face 1", "'+-0'"}), "");
+    EXPECT_EQ(refused(vs + "3 0 1 2 NaN 1 1\n3 1 3 2\n", ".off", {"face 0", "'NaN'"}), "");
+    EXPECT_EQ(refused(vs + "3 0 1 2 0x1 1 1\n3 1 3 2\n", ".off", {"face 0", "'0x1'"}), "");
+    // Every decimal spelling the stream reads still passes: signs, leading dot, trailing dot, exponents.
+    EXPECT_EQ(triangles_of(v + "+0 -0. .0 1. +.5 5E-1\n" + rest + "3 0 1 2 1e0 2E+0 0003\n3 1 3 2 -0 0 0.\n", ".off"), 2u);
+}
+
+// Binary NOFF and CNOFF faces are walked like binary OFF's (F19, code audit): the pre-scan used
+// to stop at the vertices, so CGAL resized a face to a corner count of 2^31-1.
+TEST(ReadLimits, BinaryOffWithNormalsFaceCountsAreBounded) {
+    for (const std::string kw : {"NOFF", "CNOFF"}) {
+        SCOPED_TRACE(kw);
+        std::string s = kw + " BINARY\n";
+        for (uint32_t c : {3u, 1u, 0u}) append_be32(s, c);
+        for (float c : {0.f, 0.f, 0.f, 0.f, 0.f, 1.f, 1.f, 0.f, 0.f, 0.f, 0.f, 1.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f}) {
+            uint32_t u;
+            std::memcpy(&u, &c, 4);
+            append_be32(s, u);
+        }
+        std::string ok = s;
+        for (uint32_t v : {3u, 0u, 1u, 2u}) append_be32(ok, v);
+        EXPECT_EQ(triangles_of(ok, ".off"), 1u);
+        for (uint32_t k : {0x7fffffffu, 300000000u, 0xffffffffu}) {
+            std::string bad = s;
+            for (uint32_t v : {k, 0u, 1u, 2u}) append_be32(bad, v);
+            EXPECT_EQ(refused(bad, ".off", {"face 0"}), "");
+        }
+    }
+}
+
 // ---- PLY ---------------------------------------------------------------------------------------
 
 TEST(ReadLimits, PlyAbsurdElementCountsAreRefused) {
@@ -249,6 +293,28 @@ TEST(ReadLimits, PlyPropertyTypesCgalCannotConvertAreRefusedNotCrashed) {
                       "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n0 1\n",
                       ".ply", {"'source'"}),
               "");
+}
+
+// CGAL turns colours on when red|r, green|g and blue|b each exist as uchar, then fetches one
+// spelling as uchar whatever its type: a null dereference (F20, code audit).
+TEST(ReadLimits, PlyColourPropertiesOfMixedTypesAreRefused) {
+    auto ply = [](const std::string& element, const std::string& props, const std::string& vertex_extra, const std::string& face_extra) {
+        const bool v = element == "vertex";
+        return "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n" + (v ? props : std::string()) +
+               "element face 1\nproperty list uchar int vertex_indices\n" + (v ? std::string() : props) + "end_header\n0 0 0" + vertex_extra + "\n1 0 0" +
+               vertex_extra + "\n0 1 0" + vertex_extra + "\n3 0 1 2" + face_extra + "\n";
+    };
+    const std::string mixed = "property uchar red\nproperty float green\nproperty uchar g\nproperty uchar blue\n";
+    EXPECT_EQ(refused(ply("vertex", mixed, " 1 0.5 2 3", ""), ".ply", {"'green'", "float"}), "");
+    EXPECT_EQ(refused(ply("face", "property uchar red\nproperty uchar green\nproperty float blue\nproperty uchar b\n", "", " 1 2 0.5 3"), ".ply",
+                      {"element 'face'", "'blue'"}),
+              "");
+    EXPECT_EQ(refused(ply("vertex", "property uchar r\nproperty uchar green\nproperty float g\nproperty uchar b\n", " 1 2 0.5 3", ""), ".ply", {"'g'"}), "");
+    // Colours CGAL reads, and float colours it ignores, still read.
+    EXPECT_EQ(triangles_of(ply("vertex", "property uchar red\nproperty uchar green\nproperty uchar blue\n", " 1 2 3", ""), ".ply"), 1u);
+    EXPECT_EQ(triangles_of(ply("face", "property uchar r\nproperty uchar g\nproperty uchar b\n", "", " 1 2 3"), ".ply"), 1u);
+    EXPECT_EQ(triangles_of(ply("vertex", "property float red\nproperty float green\nproperty float blue\n", " 0.1 0.2 0.3", ""), ".ply"), 1u);
+    EXPECT_EQ(triangles_of(ply("vertex", "property uchar red\nproperty uchar green\nproperty uchar blue\nproperty float r\n", " 1 2 3 0.5", ""), ".ply"), 1u);
 }
 
 TEST(ReadLimits, BinaryPlyListCountsAreBoundedByTheRemainingBytes) {

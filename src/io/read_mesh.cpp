@@ -350,12 +350,35 @@ bool clean_signed(std::string_view t, long long& v) {
     return true;
 }
 
-/// A whole token that is a number (what `istream >> double` reads as ONE number, or fails on).
+/// A whole token that is a finite decimal number, [+-]?(d+(.d*)?|.d+)([eE][+-]?d+)?, which
+/// `istream >> double` reads as exactly one number. Anything else is refused: from_chars alone
+/// also takes "nan", "inf" and (after a stripped '+') "-0" in "+-0", which the stream cannot
+/// read, so CGAL's per-line entries came out shorter than counted (F17, F18).
 bool clean_double(std::string_view t, double& v) {
-    if (!t.empty() && t[0] == '+') t.remove_prefix(1);
-    if (t.empty() || t[0] == '+') return false;
-    const auto r = std::from_chars(t.data(), t.data() + t.size(), v);
-    return r.ec == std::errc() && r.ptr == t.data() + t.size();
+    auto digits = [&](std::size_t& i) {
+        const std::size_t b = i;
+        while (i < t.size() && t[i] >= '0' && t[i] <= '9') ++i;
+        return i - b;
+    };
+    std::size_t i = 0;
+    if (i < t.size() && (t[i] == '+' || t[i] == '-')) ++i;
+    const std::size_t mantissa = i;
+    std::size_t whole = digits(i), fraction = 0;
+    if (i < t.size() && t[i] == '.') {
+        ++i;
+        fraction = digits(i);
+    }
+    if (whole + fraction == 0) return false;
+    if (i < t.size() && (t[i] == 'e' || t[i] == 'E')) {
+        ++i;
+        if (i < t.size() && (t[i] == '+' || t[i] == '-')) ++i;
+        if (digits(i) == 0) return false;
+    }
+    if (i != t.size()) return false;
+    // from_chars takes no '+'; a leading '-' it reads itself.
+    const std::size_t b = t[0] == '+' ? mantissa : 0;
+    const auto r = std::from_chars(t.data() + b, t.data() + t.size(), v);
+    return r.ec == std::errc() && r.ptr == t.data() + t.size() && std::isfinite(v);
 }
 
 /// A non-negative integral index (or corner count) written as an integer or an integral double.
@@ -483,10 +506,11 @@ std::optional<Refusal> prescan_off(std::string_view d) {
                                " faces, which need at least " + std::to_string(nv * 12 + nf * 16) + " bytes, but only " + std::to_string(left) +
                                " follow the header",
                            false};
-        // Faces can be located only when CGAL reads a fixed vertex record (N and ST add data
-        // whose layout this scan does not model; those variants keep only the bound above).
-        if (normals || textures) return std::nullopt;
-        const std::size_t vertex_bytes = static_cast<std::size_t>(nv) * (homogeneous ? 16 : 12);
+        // CGAL's binary scanner reads x y z and, for N, nx ny nz as big-endian floats; it never
+        // reads colours in binary files (m_has_vcolors is set only by the ASCII path), so a
+        // COFF or CNOFF vertex is 12 or 24 bytes. (ST, 4 and n were refused above.) Walking
+        // the faces is what keeps a corner count of 2^31-1 from reaching CGAL's resize (F19).
+        const std::size_t vertex_bytes = static_cast<std::size_t>(nv) * (normals ? 24 : 12);
         if (p > n || vertex_bytes > n - p)
             return Refusal{"truncated binary OFF file: the header declares " + std::to_string(nv) + " vertices but the file ends before them", false};
         p += vertex_bytes;
@@ -705,6 +729,31 @@ std::optional<Refusal> prescan_ply(std::string_view d) {
                 (end && pr.count_size != 0))
                 return Refusal{"unsupported PLY file: line " + std::to_string(e.header_line) + ": property '" + pr.name + "' of element '" + e.name +
                                    "' has type '" + pr.type + "' (" + (coord ? "coordinates must be float or double" : "halfedge ends must be uint") + ")",
+                               false};
+        }
+    }
+    // Colours (F20): CGAL reads r g b when each of them exists as a scalar uchar under either
+    // name (red|r, green|g, blue|b), then fetches red/green/blue if 'red' is a uchar, else
+    // r/g/b, as uchar without checking those chosen names' types: a 'green' that is a float
+    // next to a uchar 'g' is a null dereference. Such headers are refused; float colours
+    // that CGAL simply does not read as colours are fine.
+    for (const auto& e : elements) {
+        if (e.name != "vertex" && e.name != "vertices" && e.name != "face" && e.name != "faces") continue;
+        auto first = [&](const char* name) -> const PlyProperty* {
+            for (const auto& pr : e.props)
+                if (pr.name == name) return &pr;
+            return nullptr;
+        };
+        auto is_uchar = [](const PlyProperty* pr) { return pr && pr->count_size == 0 && (pr->type == "uchar" || pr->type == "uint8"); };
+        auto uchar = [&](const char* name) { return is_uchar(first(name)); };
+        if (!((uchar("red") || uchar("r")) && (uchar("green") || uchar("g")) && (uchar("blue") || uchar("b")))) continue;
+        static constexpr const char* kLong[3] = {"red", "green", "blue"};
+        static constexpr const char* kShort[3] = {"r", "g", "b"};
+        for (const char* tag : uchar("red") ? kLong : kShort) {
+            const PlyProperty* pr = first(tag);
+            if (pr && !is_uchar(pr))
+                return Refusal{"unsupported PLY file: line " + std::to_string(e.header_line) + ": element '" + e.name + "' has uchar colours, but its property '" +
+                                   tag + "' has type '" + pr->type + (pr->count_size ? " list" : "") + "' (colour components must all be uchar)",
                                false};
         }
     }
