@@ -225,6 +225,9 @@ TEST(ReadLimits, OffNumbersCgalCannotParseAreRefused) {
     EXPECT_EQ(refused(vs + "3 0 1 2 0x1 1 1\n3 1 3 2\n", ".off", {"face 0", "'0x1'"}), "");
     // Every decimal spelling the stream reads still passes: signs, leading dot, trailing dot, exponents.
     EXPECT_EQ(triangles_of(v + "+0 -0. .0 1. +.5 5E-1\n" + rest + "3 0 1 2 1e0 2E+0 0003\n3 1 3 2 -0 0 0.\n", ".off"), 2u);
+    // An underflow the stream reads as 0 passes too; an overflow it fails on does not.
+    EXPECT_EQ(triangles_of(v + "1e-400 0 -2e-324 0 0 0\n" + rest + faces, ".off"), 2u);
+    EXPECT_EQ(refused(v + "1e400 0 0 0 0 0\n" + rest + faces, ".off", {"vertex 0", "'1e400'"}), "");
 }
 
 // Binary NOFF and CNOFF faces are walked like binary OFF's (F19, code audit): the pre-scan used
@@ -346,6 +349,23 @@ TEST(ReadLimits, AsciiPlyWideListCountsAreBounded) {
     EXPECT_EQ(refused(ply_header("ascii", "3", "1", "int int") + body + "2000000000 0 1 2\n", ".ply", {"list 'vertex_indices'", "2000000000"}), "");
     EXPECT_EQ(refused(ply_header("ascii", "3", "1", "uint int") + body + "4294967295 0 1 2\n", ".ply", {"list 'vertex_indices'"}), "");
     EXPECT_EQ(refused(ply_header("ascii", "3", "1", "int int") + body + "-5 0 1 2\n", ".ply", {"list 'vertex_indices'"}), "");
+}
+
+// Every ASCII body is walked, whatever its count types: CGAL leaves a count or number it reads
+// past the end uninitialised and uses it, and wraps a narrow count (a uchar 259 reads 3 entries).
+TEST(ReadLimits, AsciiPlyNarrowListCountsAndTruncationAreRefused) {
+    const std::string body = "0 0 0\n1 0 0\n0 1 0\n";
+    EXPECT_EQ(refused(ply_header("ascii", "3", "1", "uchar int") + body, ".ply", {"truncated PLY"}), "");
+    EXPECT_EQ(refused(ply_header("ascii", "3", "1", "ushort int") + body + "3 0 1", ".ply", {"truncated PLY", "element 'face'"}), "");
+    EXPECT_EQ(refused(ply_header("ascii", "3", "1", "ushort int") + "0 0 0\n1 0 0\n0 1\n", ".ply", {"truncated PLY"}), "");
+    EXPECT_EQ(refused(ply_header("ascii", "3", "1", "uchar int") + body + "259 0 1 2\n", ".ply", {"out of range", "'259'"}), "");
+    EXPECT_EQ(refused(ply_header("ascii", "3", "1", "char int") + body + "200 0 1 2\n", ".ply", {"out of range", "'200'"}), "");
+    EXPECT_EQ(refused(ply_header("ascii", "3", "1", "short int") + body + "-1 0 1 2\n", ".ply", {"bad count"}), "");
+    EXPECT_EQ(refused(ply_header("ascii", "3", "1", "uchar int") + body + "3 0 1 2.5\n", ".ply", {"cannot parse"}), "");
+    EXPECT_EQ(refused(ply_header("ascii", "3", "1", "uchar int") + "0 0 nan\n1 0 0\n0 1 0\n3 0 1 2\n", ".ply", {"cannot parse", "'nan'"}), "");
+    // Counts at the top of their range, trailing data after the last element, CRLF: still read.
+    EXPECT_EQ(triangles_of(ply_header("ascii", "3", "1", "ushort int") + body + "3 0 1 2\nextra bytes\n", ".ply"), 1u);
+    EXPECT_EQ(triangles_of(ply_header("ascii", "3", "1", "char int") + "0 0 0\r\n1 0 0\r\n0 1 0\r\n3 0 1 2\r\n", ".ply"), 1u);
 }
 
 TEST(ReadLimits, ValidPlyVariantsStillRead) {

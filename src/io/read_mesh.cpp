@@ -301,8 +301,9 @@ std::optional<std::string> diagnose_stl(const std::string& path) {
 // header counts, an OFF face's corner count, a PLY list count), crash on a PLY 'property' before
 // any 'element', and loop forever over a PLY element without properties. The pre-scan follows
 // CGAL's own tokenisation closely enough to refuse those files first; it never refuses a file
-// CGAL would read into a soup that read_mesh_file accepts. It allocates nothing proportional to
-// declared counts and runs in O(file size) (the ASCII PLY walk only when a list has a 32-bit count).
+// CGAL would read into a soup that read_mesh_file accepts, except an ASCII PLY list count out of
+// its type's range, which CGAL silently wraps (that file is malformed). It allocates nothing proportional to
+// declared counts and runs in O(file size).
 
 struct Refusal {
     std::string what;
@@ -378,6 +379,13 @@ bool clean_double(std::string_view t, double& v) {
     // from_chars takes no '+'; a leading '-' it reads itself.
     const std::size_t b = t[0] == '+' ? mantissa : 0;
     const auto r = std::from_chars(t.data() + b, t.data() + t.size(), v);
+    if (r.ec == std::errc::result_out_of_range) {
+        // The stream reads an underflow (1e-400) as 0 and fails on an overflow (1e400);
+        // strtod tells the two apart the same way.
+        const std::string copy(t);
+        v = std::strtod(copy.c_str(), nullptr);
+        return std::isfinite(v);
+    }
     return r.ec == std::errc() && r.ptr == t.data() + t.size() && std::isfinite(v);
 }
 
@@ -769,12 +777,11 @@ std::optional<Refusal> prescan_ply(std::string_view d) {
             if (e.count > have + 1 || (tokens += e.count * e.props.size()) > (have + 1) / 2)
                 return Refusal{"truncated PLY file: the header declares more element data than the " + std::to_string(have) + " bytes after 'end_header' can hold", true};
         }
-        // A list with a 32-bit count could make CGAL allocate up to 32 GB: walk the body the way
-        // CGAL reads it (whitespace-separated numbers). Smaller count types are harmless.
-        bool wide = false;
-        for (const auto& e : elements)
-            for (const auto& pr : e.props) wide = wide || pr.count_size == 4;
-        if (!wide) return std::nullopt;
+        // Walk the body the way CGAL reads it (whitespace-separated numbers, only the properties
+        // it knows): a list with a 32-bit count could make it allocate up to 32 GB (F7), and a
+        // count or number it tries to read past the end is left uninitialised and then used
+        // (found by code audit with MSan). A narrow list count is cast to its type by CGAL (a
+        // uchar count of 259 reads 3 entries), so one out of its type's range is refused.
         std::size_t q = body;
         for (const auto& e : elements) {
             for (unsigned long long i = 0; i < e.count; ++i) {
@@ -797,6 +804,9 @@ std::optional<Refusal> prescan_ply(std::string_view d) {
                     }
                     long long c = 0;
                     if (!clean_signed(tok, c) || c < 0) return bad(tok, "bad count for list '" + pr.name + "'");
+                    if (pr.count_size < 4 && c > (1LL << (8 * pr.count_size - (pr.count_signed ? 1 : 0))) - 1)
+                        return bad(tok, "count of list '" + pr.name + "' out of range for its " + std::to_string(8 * pr.count_size) + "-bit " +
+                                            (pr.count_signed ? "signed" : "unsigned") + " type:");
                     if (static_cast<unsigned long long>(c) > (n - q) / 2 + 1) {
                         Refusal r = bad(tok, "list '" + pr.name + "' declares more entries than the rest of the file can hold:");
                         r.what = "truncated PLY file: " + r.what;
