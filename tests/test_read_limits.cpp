@@ -7,15 +7,19 @@
 #include <gtest/gtest.h>
 
 #include <sys/resource.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <array>
 #include <cstdint>
+#include <limits>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "singlestrip/errors.hpp"
@@ -54,8 +58,7 @@ std::string write_file(const std::string& bytes, const std::string& ext) {
 /// Reads `bytes` (as a file with extension `ext`) in a forked child limited to 512 MiB of address
 /// space. Returns "" when read_mesh_file threw InputError whose message starts with the path and
 /// contains every needle; otherwise what happened.
-std::string refused(const std::string& bytes, const std::string& ext, const std::vector<std::string>& needles = {}) {
-    const std::string path = write_file(bytes, ext);
+std::string refused_path(const std::string& path, const std::vector<std::string>& needles = {}) {
     const fs::path msg_file = path + ".msg";
     std::fflush(nullptr);
     const pid_t pid = fork();
@@ -96,6 +99,25 @@ std::string refused(const std::string& bytes, const std::string& ext, const std:
         if (msg.find(n) == std::string::npos) return "message lacks '" + n + "': " + msg;
     return {};
 }
+
+std::string refused(const std::string& bytes, const std::string& ext, const std::vector<std::string>& needles = {}) {
+    return refused_path(write_file(bytes, ext), needles);
+}
+
+/// A named pipe `name` in the scratch directory with a thread writing `bytes` into it once.
+struct Pipe {
+    std::string path;
+    std::thread writer;
+    Pipe(const std::string& name, std::string bytes) : path((scratch() / name).string()) {
+        fs::remove(path);
+        EXPECT_EQ(::mkfifo(path.c_str(), 0600), 0);
+        writer = std::thread([p = path, b = std::move(bytes)] { std::ofstream(p, std::ios::binary).write(b.data(), static_cast<std::streamsize>(b.size())); });
+    }
+    ~Pipe() {
+        writer.join();
+        fs::remove(path);
+    }
+};
 
 /// Reads `bytes` in-process (they are small and valid) and returns the number of triangles.
 size_t triangles_of(const std::string& bytes, const std::string& ext) { return read_mesh_file(write_file(bytes, ext)).triangles.size(); }
@@ -421,4 +443,117 @@ TEST(ReadLimits, FuzzReproducersAreCleanInputErrors) {
         const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
         EXPECT_EQ(refused(bytes, p.extension().string()), "");
     }
+}
+
+// ---- Every format: the bytes are read once (F22) ------------------------------------------------
+
+// CGAL used to reopen the path: a pipe looked empty to the pre-scan (which could not seek it) and
+// then gave CGAL its real bytes unchecked (F1's crash again); a device never ended.
+TEST(ReadLimits, PipesAreReadOnceAndDevicesAreRefused) {
+    {
+        Pipe pipe("f1.ply", "ply\nformat ascii 1.0\nproperty float x\nelement vertex 3\nend_header\n");
+        EXPECT_EQ(refused_path(pipe.path, {"'property' before any 'element'"}), "");
+    }
+    {
+        Pipe pipe("ok.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+        EXPECT_EQ(read_mesh_file(pipe.path).triangles.size(), 1u);
+    }
+    const fs::path device = scratch() / "random.stl";
+    fs::create_symlink("/dev/urandom", device);
+    EXPECT_EQ(refused_path(device.string(), {"not a regular file"}), "");
+}
+
+// ---- STL: CGAL's own ASCII/binary fallback, made clean ------------------------------------------
+
+namespace {
+std::string binary_stl_of(const std::string& header80, const std::vector<std::array<float, 9>>& triangles) {
+    std::string s = header80;
+    s.resize(80, ' ');
+    append(s, static_cast<uint32_t>(triangles.size()));
+    for (const auto& t : triangles) {
+        for (int k = 0; k < 3; ++k) append(s, 0.f);
+        for (float c : t) append(s, c);
+        s.append(2, '\0');
+    }
+    return s;
+}
+const std::vector<std::array<float, 9>> kTetra = {
+    {0, 0, 0, 0, 1, 0, 1, 0, 0}, {0, 0, 0, 1, 0, 0, 0, 0, 1}, {0, 0, 0, 0, 0, 1, 0, 1, 0}, {1, 0, 0, 0, 1, 0, 0, 0, 1}};
+}  // namespace
+
+// CGAL's binary parser merges vertices in a std::map, where NaN equals everything (F23).
+TEST(ReadLimits, StlBinaryNonFiniteVerticesAreRefused) {
+    EXPECT_EQ(triangles_of(binary_stl_of("tetra", kTetra), ".stl"), 4u);
+    auto bad = kTetra;
+    bad[2][6] = std::numeric_limits<float>::quiet_NaN();
+    EXPECT_EQ(refused(binary_stl_of("tetra", bad), ".stl", {"triangle 2", "vertex 2", "non-finite"}), "");
+    bad = kTetra;
+    bad[0][0] = std::numeric_limits<float>::infinity();
+    EXPECT_EQ(refused(binary_stl_of("solid but binary", bad), ".stl", {"triangle 0", "non-finite"}), "");
+}
+
+// CGAL kept the points of a failed ASCII attempt when it then read the file as binary (F24):
+// a binary file whose header starts with "solid" and holds "vertex" words got their points.
+TEST(ReadLimits, StlFailedAsciiAttemptLeavesNothingBehind) {
+    const std::string header = "solid t\nfacet\nvertex 7 7 7\nvertex 8 8 8\nvertex 9 9 9\nvertex 6 6 6\n";
+    const TriangleSoup soup = read_mesh_file(write_file(binary_stl_of(header, kTetra), ".stl"));
+    ASSERT_EQ(soup.triangles.size(), 4u);
+    ASSERT_EQ(soup.points.size(), 4u);
+    for (const auto& p : soup.points)
+        for (double c : p) EXPECT_TRUE(c == 0 || c == 1) << "a point from the header text was kept";
+    // A truncated binary file is not read as text; ASCII files CGAL misses as ASCII still are.
+    std::string truncated = binary_stl_of("x", kTetra);
+    truncated.resize(84 + 50);  // one of the four triangles, then text: still short of 284 bytes
+    truncated += "facet normal 0 0 1 outer loop vertex 0 0 0 vertex 1 0 0 vertex 0 1 0 endloop endfacet endsolid";
+    EXPECT_EQ(refused(truncated, ".stl", {"truncated binary STL"}), "");
+    const std::string facet = "facet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\nendsolid\n";
+    EXPECT_EQ(triangles_of("solid\tname\n" + facet, ".stl"), 1u);
+    EXPECT_EQ(triangles_of("\xEF\xBB\xBFsolid name\n" + facet, ".stl"), 1u);
+}
+
+// ---- OBJ and PLY: files CGAL reads as something else -------------------------------------------
+
+// CGAL reads an index, then skips to the next space: "3#x 4" is read as corners 3 and 4 (F25).
+TEST(ReadLimits, ObjCommentGluedToAnIndexIsRefused) {
+    const std::string v = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n";
+    EXPECT_EQ(refused(v + "f 1 2 3#x 4\n", ".obj", {"line 5", "face 0", "'#'"}), "");
+    EXPECT_EQ(refused(v + "f 1 2/#/ 3\n", ".obj", {"'#'"}), "");
+    EXPECT_EQ(triangles_of(v + "f 1 2 3#comment\n", ".obj"), 1u);  // nothing after it: same face either way
+    EXPECT_EQ(triangles_of(v + "f 1 2 3 # a 4\n", ".obj"), 1u);    // a separate '#' ends CGAL's face too
+}
+
+// diagnose_ply summed header counts in a long long (F26, UBSan: signed overflow).
+TEST(ReadLimits, PlyHeaderCountsThatOverflowASumAreRefused) {
+    const std::string mesh = "element vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                             "element face 1\nproperty list uchar int vertex_indices\n";
+    std::string h = "ply\nformat ascii 1.0\n" + mesh;
+    for (int i = 0; i < 10; ++i) h += "element e" + std::to_string(i) + " 999999999999999999\nproperty float a\n";
+    EXPECT_EQ(refused(h + "end_header\n1 2 3 4\n", ".ply", {"truncated PLY"}), "");
+    std::string b = "ply\nformat binary_little_endian 1.0\n" + mesh;
+    for (int i = 0; i < 10; ++i) b += "element e" + std::to_string(i) + " 999999999999999999\nproperty double a\n";
+    EXPECT_EQ(refused(b + "end_header\n12345678", ".ply", {"truncated PLY"}), "");
+}
+
+// A few bytes per item on disk became a point or a polygon each in CGAL's arrays (F27); those
+// items are refused first. CGAL uses only the first property of a name, so later namesakes of
+// another type are not refused (they were, wrongly).
+TEST(ReadLimits, PlyItemsCgalWouldStoreUselesslyAreRefused) {
+    std::string v = "ply\nformat binary_little_endian 1.0\nelement vertex 1000\nproperty uchar q\nelement face 0\nproperty list uchar int vertex_indices\nend_header\n";
+    EXPECT_EQ(refused(v + std::string(1000, '\0'), ".ply", {"element 'vertex'", "no property 'x'"}), "");
+    std::string f = ply_header("binary_little_endian", "3", "1000");
+    f.append(36, '\0');
+    EXPECT_EQ(refused(f + std::string(1000, '\0'), ".ply", {"face 0", "0 vertices"}), "");
+    const std::string body = "0 0 0\n1 0 0\n0 1 0\n";
+    EXPECT_EQ(refused(ply_header("ascii", "3", "2") + body + "3 0 1 2\n2 0 1\n", ".ply", {"face 1", "2 vertices"}), "");
+    EXPECT_EQ(refused(ply_header("ascii", "3", "1", "uchar uchar") + body + "3 0 1 2\n", ".ply", {"no 'vertex_indices'", "int or uint"}), "");
+    // vertex_index is read when vertex_indices is not an int list; later namesakes are ignored.
+    EXPECT_EQ(triangles_of("ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nproperty list uchar float x\n"
+                           "element face 1\nproperty list uchar int vertex_index\nend_header\n0 0 0 1 5\n1 0 0 0\n0 1 0 0\n3 0 1 2\n",
+                           ".ply"),
+              1u);
+    EXPECT_EQ(triangles_of("ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\n"
+                           "property list uchar int vertex_indices\nelement halfedge 1\nproperty uint source\nproperty uint target\nproperty int source\n"
+                           "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n0 1 -1\n",
+                           ".ply"),
+              1u);
 }

@@ -1,6 +1,10 @@
 // Mesh file reading: CGAL's polygon-soup readers do the parsing; the checks around them turn
 // CGAL's bare true/false into messages naming the file, the element and the problem.
-#include <CGAL/IO/polygon_soup_io.h>
+#include <CGAL/IO/OBJ.h>
+#include <CGAL/IO/OFF.h>
+#include <CGAL/IO/PLY.h>
+#include <CGAL/IO/STL.h>
+#include <CGAL/IO/STL/STL_reader.h>
 #include <CGAL/Simple_cartesian.h>
 
 #include <algorithm>
@@ -13,6 +17,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -48,15 +53,12 @@ std::string lower_extension(const std::string& path) {
 
 [[noreturn]] void fail(const std::string& path, const std::string& what) { throw InputError(path + ": " + what); }
 
-std::string read_all(const std::string& path) {
-    std::ifstream in(path, std::ios::binary | std::ios::ate);
-    if (!in) return {};
-    const auto size = in.tellg();
-    if (size <= 0) return {};
-    std::string data(static_cast<std::size_t>(size), '\0');
-    in.seekg(0);
-    in.read(data.data(), size);
-    data.resize(static_cast<std::size_t>(in.gcount()));
+/// Every byte of `in`, read to its end (a pipe has no size to ask for in advance).
+std::string read_all(std::istream& in, std::size_t expected_size) {
+    std::string data;
+    data.reserve(expected_size);
+    char buffer[1 << 16];
+    while (in.read(buffer, sizeof buffer) || in.gcount() > 0) data.append(buffer, static_cast<std::size_t>(in.gcount()));
     return data;
 }
 
@@ -102,8 +104,8 @@ std::string index_problem(size_t face, long long index, size_t num_vertices) {
 // --- diagnostic scanners, run only when CGAL rejected the file -------------------------------
 
 /// OFF: line based (one vertex / one face per line, as every OFF writer does).
-std::optional<std::string> diagnose_off(const std::string& path) {
-    std::ifstream in(path);
+std::optional<std::string> diagnose_off(const std::string& path, const std::string& data) {
+    std::istringstream in(data);
     std::string line;
     size_t lineno = 0;
     std::vector<std::string> header;
@@ -169,8 +171,8 @@ std::optional<std::string> diagnose_off(const std::string& path) {
 }
 
 /// OBJ: v and f records; indices are 1-based, negative ones are relative to the current count.
-std::optional<std::string> diagnose_obj(const std::string& path) {
-    std::ifstream in(path);
+std::optional<std::string> diagnose_obj(const std::string& path, const std::string& data) {
+    std::istringstream in(data);
     std::string line;
     size_t lineno = 0, nv = 0, nf = 0;
     struct Ref { size_t line, face; long long index; };
@@ -216,8 +218,7 @@ std::size_t ply_type_size(const std::string& t) {
 }
 
 /// PLY: checks the header and, for binary files, that the body is long enough.
-std::optional<std::string> diagnose_ply(const std::string& path) {
-    std::string data = read_all(path);
+std::optional<std::string> diagnose_ply(const std::string& data) {
     if (data.rfind("ply", 0) != 0) return "not a PLY file (it does not start with 'ply')";
     auto end = data.find("end_header");
     if (end == std::string::npos) return "malformed PLY header: no 'end_header' line";
@@ -259,14 +260,20 @@ std::optional<std::string> diagnose_ply(const std::string& path) {
         std::istringstream bs(data.substr(body));
         while (std::getline(bs, line))
             if (!tokens_of(line).empty()) ++lines;
-        long long need = 0;
-        for (const auto& e : elements) need += e.count;
+        long long need = 0;  // saturates: counts come from the header (up to 10^18 each)
+        for (const auto& e : elements) need = e.count > std::numeric_limits<long long>::max() - need ? std::numeric_limits<long long>::max() : need + e.count;
         if (static_cast<long long>(lines) < need)
-            return "truncated PLY file: the header declares " + std::to_string(need) + " element lines but only " + std::to_string(lines) + " were found";
+            return "truncated PLY file: the header declares " +
+                   (need == std::numeric_limits<long long>::max() ? std::string("more than 2^63") : std::to_string(need)) + " element lines but only " +
+                   std::to_string(lines) + " were found";
     } else {
-        std::size_t need = 0;
-        for (const auto& e : elements)
-            need += static_cast<std::size_t>(e.count) * (e.fixed + (e.has_list ? e.list_min : 0));
+        std::size_t need = 0;  // saturates, as above
+        for (const auto& e : elements) {
+            std::size_t bytes = 0;
+            if (__builtin_mul_overflow(static_cast<std::size_t>(e.count), e.fixed + (e.has_list ? e.list_min : 0), &bytes) ||
+                __builtin_add_overflow(need, bytes, &need))
+                need = std::numeric_limits<std::size_t>::max();
+        }
         if (have < need)
             return "truncated PLY file: " + std::to_string(nv) + " vertices and " + std::to_string(nf) + " triangles need " + std::to_string(need) +
                    " bytes of data but the file has only " + std::to_string(have);
@@ -275,8 +282,7 @@ std::optional<std::string> diagnose_ply(const std::string& path) {
 }
 
 /// STL: binary size check (84-byte header + 50 bytes per triangle).
-std::optional<std::string> diagnose_stl(const std::string& path) {
-    std::string data = read_all(path);
+std::optional<std::string> diagnose_stl(const std::string& data) {
     std::size_t first = data.find_first_not_of(" \t\r\n");
     const bool ascii = first != std::string::npos && data.compare(first, 5, "solid") == 0 &&
                        data.find("facet", first) != std::string::npos;
@@ -300,10 +306,13 @@ std::optional<std::string> diagnose_stl(const std::string& path) {
 // CGAL's readers resize their arrays to counts read from the file before reading the data (OFF
 // header counts, an OFF face's corner count, a PLY list count), crash on a PLY 'property' before
 // any 'element', and loop forever over a PLY element without properties. The pre-scan follows
-// CGAL's own tokenisation closely enough to refuse those files first; it never refuses a file
-// CGAL would read into a soup that read_mesh_file accepts, except an ASCII PLY list count out of
-// its type's range, which CGAL silently wraps (that file is malformed). It allocates nothing proportional to
-// declared counts and runs in O(file size).
+// CGAL's own tokenisation closely enough to refuse those files first. It never refuses a file
+// CGAL would read into a soup that read_mesh_file accepts, except malformed files CGAL reads as
+// something else: an ASCII PLY list count out of its type's range (CGAL wraps it), PLY vertices
+// without x, y, z (CGAL puts them at the origin), PLY faces with fewer than 3 corners (refused
+// anyway, but only after CGAL stored them all), and an OBJ '#' glued to an index with text after
+// it (CGAL reads the comment as corners). It allocates nothing proportional to declared counts
+// and runs in O(file size).
 
 struct Refusal {
     std::string what;
@@ -727,10 +736,14 @@ std::optional<Refusal> prescan_ply(std::string_view d) {
                                " items but has no properties of a known type",
                            false};
     // CGAL fetches some properties with a fixed C++ type and dereferences a null pointer when the
-    // file's type differs: vertex coordinates must be float or double, halfedge ends uint.
+    // file's type differs: vertex coordinates must be float or double, halfedge ends uint. It
+    // looks a name up as the FIRST property of that name: later namesakes are never read.
     for (const auto& e : elements) {
         const bool vertex = e.name == "vertex" || e.name == "vertices";
-        for (const auto& pr : e.props) {
+        for (std::size_t k = 0; k < e.props.size(); ++k) {
+            const PlyProperty& pr = e.props[k];
+            if (std::any_of(e.props.begin(), e.props.begin() + static_cast<std::ptrdiff_t>(k), [&](const PlyProperty& o) { return o.name == pr.name; }))
+                continue;
             const bool coord = vertex && (pr.name == "x" || pr.name == "y" || pr.name == "z");
             const bool end = e.name == "halfedge" && (pr.name == "source" || pr.name == "target");
             if ((coord && (pr.count_size != 0 || pr.integral)) || (end && pr.count_size == 0 && pr.type != "uint" && pr.type != "uint32") ||
@@ -763,6 +776,35 @@ std::optional<Refusal> prescan_ply(std::string_view d) {
                 return Refusal{"unsupported PLY file: line " + std::to_string(e.header_line) + ": element '" + e.name + "' has uchar colours, but its property '" +
                                    tag + "' has type '" + pr->type + (pr->count_size ? " list" : "") + "' (colour components must all be uchar)",
                                false};
+        }
+    }
+    // Vertices without coordinates would all be read as the origin, and CGAL reads faces only
+    // from a 'vertex_indices' (or else 'vertex_index') list of int or uint.
+    std::vector<const PlyProperty*> face_list(elements.size(), nullptr);  // the list CGAL reads, per element
+    for (std::size_t ei = 0; ei < elements.size(); ++ei) {
+        const PlyElement& e = elements[ei];
+        if (e.count == 0) continue;
+        auto first = [&](const char* name) -> const PlyProperty* {
+            for (const auto& pr : e.props)
+                if (pr.name == name) return &pr;
+            return nullptr;
+        };
+        if (e.name == "vertex" || e.name == "vertices") {
+            for (const char* c : {"x", "y", "z"})
+                if (!first(c))
+                    return Refusal{"unsupported PLY file: line " + std::to_string(e.header_line) + ": element '" + e.name + "' has no property '" + c +
+                                       "' (vertex coordinates x, y, z must be float or double)",
+                                   false};
+        } else if (e.name == "face" || e.name == "faces") {
+            auto int_list = [](const PlyProperty* pr) {
+                return pr && pr->count_size != 0 && (pr->type == "list int" || pr->type == "list int32" || pr->type == "list uint" || pr->type == "list uint32");
+            };
+            const PlyProperty* list = int_list(first("vertex_indices")) ? first("vertex_indices") : int_list(first("vertex_index")) ? first("vertex_index") : nullptr;
+            if (!list)
+                return Refusal{"unsupported PLY file: line " + std::to_string(e.header_line) + ": element '" + e.name +
+                                   "' has no 'vertex_indices' (or 'vertex_index') list of int or uint",
+                               false};
+            face_list[ei] = list;
         }
     }
     const std::size_t body = end_header ? std::min(p, n) : n;
@@ -807,6 +849,10 @@ std::optional<Refusal> prescan_ply(std::string_view d) {
                     if (pr.count_size < 4 && c > (1LL << (8 * pr.count_size - (pr.count_signed ? 1 : 0))) - 1)
                         return bad(tok, "count of list '" + pr.name + "' out of range for its " + std::to_string(8 * pr.count_size) + "-bit " +
                                             (pr.count_signed ? "signed" : "unsigned") + " type:");
+                    if (&pr == face_list[static_cast<std::size_t>(&e - elements.data())] && c < 3)
+                        return Refusal{"line " + std::to_string(line_of(d, q)) + ": face " + std::to_string(i) + " has only " + std::to_string(c) +
+                                           " vertices (at least 3 needed)",
+                                       false};
                     if (static_cast<unsigned long long>(c) > (n - q) / 2 + 1) {
                         Refusal r = bad(tok, "list '" + pr.name + "' declares more entries than the rest of the file can hold:");
                         r.what = "truncated PLY file: " + r.what;
@@ -853,6 +899,8 @@ std::optional<Refusal> prescan_ply(std::string_view d) {
                 uint64_t c = 0;
                 for (std::size_t k = pr.count_size; k-- > 0;) c = c << 8 | b[k];
                 const bool negative = pr.count_signed && (b[pr.count_size - 1] & 0x80);
+                if (!negative && &pr == face_list[static_cast<std::size_t>(&e - elements.data())] && c < 3)
+                    return Refusal{"face " + std::to_string(i) + " has only " + std::to_string(c) + " vertices (at least 3 needed)", false};
                 if (negative || c > (n - q) / pr.size)
                     return Refusal{std::string(negative ? "corrupt" : "truncated") + " PLY file: element '" + e.name + "' item " + std::to_string(i) +
                                        ": list '" + pr.name + "' declares " + (negative ? std::string("a negative number of") : std::to_string(c)) +
@@ -881,7 +929,20 @@ std::optional<Refusal> prescan_obj(std::string_view d) {
         ++lineno;
         std::size_t q = line;
         if (next_token(d, q, end) != "f") continue;
-        if (const void* hash = std::memchr(d.data() + q, '#', end - q)) end = static_cast<std::size_t>(static_cast<const char*>(hash) - d.data());
+        if (const void* hash = std::memchr(d.data() + q, '#', end - q)) {
+            const std::size_t h = static_cast<std::size_t>(static_cast<const char*>(hash) - d.data());
+            // CGAL reads an index, then skips to the next space: a '#' glued to an index does not
+            // end its line, and the "comment" after it is read as more corners (F25).
+            if (!is_ws(d[h - 1])) {
+                std::size_t after = h;
+                while (after < end && !is_ws(d[after])) ++after;
+                if (d.substr(after, end - after).find_first_not_of(" \t\r\f\v") != std::string_view::npos)
+                    return Refusal{"line " + std::to_string(lineno) + ": face " + std::to_string(face) +
+                                       ": '#' right after a vertex reference with more text after it (a comment needs a space before '#')",
+                                   false};
+            }
+            end = h;
+        }
         for (std::string_view t; !(t = next_token(d, q, end)).empty();) {
             auto where = [&] { return "line " + std::to_string(lineno) + ": face " + std::to_string(face) + ": "; };
             const std::string_view head = t.substr(0, t.find('/'));
@@ -909,11 +970,62 @@ std::optional<Refusal> prescan_stl(std::string_view d) {
     uint32_t count = 0;
     std::memcpy(&count, d.data() + 80, 4);
     if (84 + 50 * static_cast<std::size_t>(count) <= d.size()) return std::nullopt;
-    // CGAL then retries the file as ASCII, which can give triangles only from "vertex" lines.
-    if (d.find("vertex") != std::string_view::npos) return std::nullopt;
+    // CGAL then retries the file as ASCII. That is what an ASCII file whose "solid" CGAL did not
+    // recognise needs (a tab after it, a UTF-8 byte-order mark before it); anything else is a
+    // truncated binary file, and reading it as text would pick words out of binary data.
+    std::size_t a = d.substr(0, 3) == "\xEF\xBB\xBF" ? 3 : 0;
+    while (a < d.size() && is_ws(d[a])) ++a;
+    if (d.substr(a, 5) == "solid" && a + 5 < d.size() && is_ws(d[a + 5])) return std::nullopt;
     return Refusal{"truncated binary STL file: the header declares " + std::to_string(count) + " triangles (" +
                        std::to_string(84 + 50 * static_cast<std::size_t>(count)) + " bytes) but the file has " + std::to_string(d.size()) + " bytes",
                    true};
+}
+
+/// Why CGAL's binary STL parser must not see `d`, or nothing: a vertex coordinate that is NaN
+/// would be merged into an arbitrary vertex by its std::map (NaN compares equal to everything;
+/// F23), so every non-finite vertex coordinate of a complete binary file is refused here.
+std::optional<std::string> binary_stl_problem(std::string_view d) {
+    if (d.size() < 84) return std::nullopt;
+    uint32_t count = 0;
+    std::memcpy(&count, d.data() + 80, 4);
+    if (84 + 50 * static_cast<std::size_t>(count) > d.size()) return std::nullopt;  // the parser fails on it
+    for (std::size_t t = 0; t < count; ++t)
+        for (std::size_t k = 0; k < 9; ++k) {
+            float x = 0;
+            std::memcpy(&x, d.data() + 84 + 50 * t + 12 + 4 * k, 4);  // little-endian, as CGAL reads it
+            if (!std::isfinite(x))
+                return "binary STL triangle " + std::to_string(t) + ": vertex " + std::to_string(k / 3) + " has a non-finite coordinate (NaN or infinity)";
+        }
+    return std::nullopt;
+}
+
+/// CGAL's STL dispatch (STL.h, read_STL(istream&)): a file whose first word is "solid" is
+/// parsed as ASCII, then as binary if that fails; any other file as binary, then as ASCII. CGAL
+/// keeps the first attempt's points and triangles when it makes the second, whose indices then
+/// point at the wrong points (F24: a binary file with a "solid" header read with three vertices
+/// from the header). Here the soup is cleared before each attempt.
+bool read_stl(std::istringstream& in, std::vector<CgalPoint>& points, std::vector<std::vector<std::size_t>>& polygons,
+              std::optional<std::string>& problem) {
+    const std::string_view d = in.view();
+    std::size_t p = 0;
+    while (p < d.size() && std::isspace(static_cast<unsigned char>(d[p]))) ++p;
+    if (d.size() - p < 6) return true;  // CGAL reads an empty soup
+    const bool solid = d.substr(p, 5) == "solid" && (d[p + 5] == '\n' || d[p + 5] == '\r' || d[p + 5] == ' ');
+    auto attempt = [&](bool ascii) {
+        points.clear();
+        polygons.clear();
+        in.clear();
+        in.seekg(0);
+        if (ascii) return CGAL::IO::internal::parse_ASCII_STL(in, points, polygons, false);
+        problem = binary_stl_problem(d);
+        return !problem && CGAL::IO::internal::parse_binary_STL(in, points, polygons, false);
+    };
+    const bool ok = solid ? attempt(true) || attempt(false) : attempt(false) || (!problem && attempt(true));
+    if (!ok) {
+        points.clear();
+        polygons.clear();
+    }
+    return ok;
 }
 
 }  // namespace
@@ -931,24 +1043,36 @@ TriangleSoup read_mesh_file(const std::string& path) {
     const auto status = std::filesystem::status(path, ec);
     if (!std::filesystem::exists(status)) fail(path, "no such file");
     if (std::filesystem::is_directory(status)) fail(path, "is a directory, not a mesh file");
+    // A device (/dev/urandom) never ends; a pipe does, and is read like a file.
+    if (!std::filesystem::is_regular_file(status) && !std::filesystem::is_fifo(status))
+        fail(path, "is not a regular file or a pipe (devices and sockets are not read)");
+
+    // The bytes are read once: the pre-scan, CGAL and the diagnosis all see the same ones, even
+    // if the file changes meanwhile or is a pipe (F22: CGAL used to reopen the path).
+    std::string data;
     {
-        std::ifstream probe(path, std::ios::binary);
-        if (!probe) fail(path, std::string("cannot open file for reading (") + std::strerror(errno) + ")");
-        char c;
-        bool any_content = false;
-        // Empty means no bytes, or only whitespace.
-        while (probe.get(c))
-            if (!std::isspace(static_cast<unsigned char>(c))) {
-                any_content = true;
-                break;
-            }
-        if (!any_content) fail(path, "empty file");
+        std::ifstream in(path, std::ios::binary);
+        if (!in) fail(path, std::string("cannot open file for reading (") + std::strerror(errno) + ")");
+        const auto size = std::filesystem::is_regular_file(status) ? std::filesystem::file_size(path, ec) : 0;
+        data = read_all(in, ec ? 0 : static_cast<std::size_t>(size));
+        if (in.bad()) fail(path, "read error");
     }
+    // Empty means no bytes, or only whitespace.
+    if (std::all_of(data.begin(), data.end(), [](char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; })) fail(path, "empty file");
+
+    auto diagnose = [&](bool cgal_failed) -> std::optional<std::string> {
+        switch (fmt) {
+            case InFormat::Off: return diagnose_off(path, data);
+            case InFormat::Ply: return diagnose_ply(data);
+            case InFormat::Stl: return diagnose_stl(data);
+            case InFormat::Obj: return cgal_failed ? diagnose_obj(path, data) : std::nullopt;
+        }
+        return std::nullopt;
+    };
 
     // CGAL trusts declared counts (it resizes to them before reading) and crashes or hangs on some
     // malformed PLY headers: refuse those files from the bytes before CGAL sees them.
     {
-        const std::string data = read_all(path);
         std::optional<Refusal> refusal;
         switch (fmt) {
             case InFormat::Off: refusal = prescan_off(data); break;
@@ -957,17 +1081,9 @@ TriangleSoup read_mesh_file(const std::string& path) {
             case InFormat::Obj: refusal = prescan_obj(data); break;
         }
         if (refusal) {
-            std::optional<std::string> why;
             // The line-based diagnosers give the messages users already know (truncation, face
             // sizes, indices); they allocate nothing proportional to declared counts.
-            if (refusal->prefer_diagnosis) {
-                switch (fmt) {
-                    case InFormat::Off: why = diagnose_off(path); break;
-                    case InFormat::Ply: why = diagnose_ply(path); break;
-                    case InFormat::Stl: why = diagnose_stl(path); break;
-                    case InFormat::Obj: break;
-                }
-            }
+            const std::optional<std::string> why = refusal->prefer_diagnosis ? diagnose(false) : std::nullopt;
             fail(path, why ? *why : refusal->what);
         }
     }
@@ -975,19 +1091,30 @@ TriangleSoup read_mesh_file(const std::string& path) {
     std::vector<CgalPoint> points;
     std::vector<std::vector<std::size_t>> polygons;
     bool ok = false;
+    std::optional<std::string> stl_problem;
+    // The stream is built on the bytes (moved in and out, not copied).
+    std::istringstream in(std::move(data));
     try {
-        ok = CGAL::IO::read_polygon_soup(path, points, polygons, CGAL::parameters::verbose(false));
+        const auto np = CGAL::parameters::verbose(false);
+        switch (fmt) {
+            case InFormat::Obj:
+                CGAL::IO::set_mode(in, CGAL::IO::ASCII);
+                ok = CGAL::IO::read_OBJ(in, points, polygons, np);
+                break;
+            case InFormat::Off: ok = CGAL::IO::read_OFF(in, points, polygons, np); break;
+            case InFormat::Ply:
+                CGAL::IO::set_mode(in, CGAL::IO::BINARY);
+                ok = CGAL::IO::read_PLY(in, points, polygons, np);
+                break;
+            case InFormat::Stl: ok = read_stl(in, points, polygons, stl_problem); break;
+        }
     } catch (const std::exception& e) {
         ok = false;  // CGAL's PLY reader may throw on malformed input; our diagnosis follows
     }
+    data = std::move(in).str();
+    if (stl_problem) fail(path, *stl_problem);
     if (!ok) {
-        std::optional<std::string> why;
-        switch (fmt) {
-            case InFormat::Off: why = diagnose_off(path); break;
-            case InFormat::Obj: why = diagnose_obj(path); break;
-            case InFormat::Ply: why = diagnose_ply(path); break;
-            case InFormat::Stl: why = diagnose_stl(path); break;
-        }
+        const std::optional<std::string> why = diagnose(true);
         fail(path, why ? *why : std::string("malformed or truncated ") + format_name(fmt) + " file");
     }
 
