@@ -96,6 +96,16 @@ struct Tally {
     }
 };
 
+/// With SINGLESTRIP_MUTATION_LOG=<file> every case's outcome is written there, one line each
+/// ("label<TAB>refused<TAB>message" or "label<TAB>stripped"), to compare the readers of two builds.
+std::FILE* outcome_log() {
+    static std::FILE* log = [] {
+        const char* path = std::getenv("SINGLESTRIP_MUTATION_LOG");
+        return path ? std::fopen(path, "a") : nullptr;
+    }();
+    return log;
+}
+
 /// Reads `path` as a mesh; "" when read_mesh_file threw InputError naming the file or the soup
 /// passed the checked pipeline (refused or stripped and verified), else what went wrong.
 std::string check_file(const std::string& path, const std::string& label, Tally& t) {
@@ -104,6 +114,7 @@ std::string check_file(const std::string& path, const std::string& label, Tally&
         soup = read_mesh_file(path);
     } catch (const InputError& e) {
         ++t.refused;
+        if (std::FILE* log = outcome_log()) std::fprintf(log, "%s\trefused\t%s\n", label.c_str(), e.what() + std::min(path.size(), std::strlen(e.what())));
         if (std::string(e.what()).rfind(path, 0) != 0) return label + ": InputError does not name the file: " + e.what();
         return {};
     } catch (const std::exception& e) {
@@ -113,6 +124,7 @@ std::string check_file(const std::string& path, const std::string& label, Tally&
     fuzzcheck::Outcome outcome;
     if (auto p = fuzzcheck::check_pipeline(std::move(soup), {}, &outcome); !p.empty()) return label + ": " + p;
     ++(outcome == fuzzcheck::Outcome::Stripped ? t.stripped : t.refused);
+    if (std::FILE* log = outcome_log()) std::fprintf(log, "%s\t%s\n", label.c_str(), outcome == fuzzcheck::Outcome::Stripped ? "stripped" : "refused\t(pipeline)");
     return {};
 }
 
