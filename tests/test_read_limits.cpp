@@ -12,6 +12,7 @@
 #include <unistd.h>
 
 #include <array>
+#include <csignal>
 #include <cstdint>
 #include <limits>
 #include <cstdio>
@@ -461,6 +462,31 @@ TEST(ReadLimits, PipesAreReadOnceAndDevicesAreRefused) {
     const fs::path device = scratch() / "random.stl";
     fs::create_symlink("/dev/urandom", device);
     EXPECT_EQ(refused_path(device.string(), {"not a regular file"}), "");
+}
+
+// The whole input is held in memory once: a file or a pipe longer than the limit is refused, a
+// pipe as soon as the limit is passed (a writer that never stops must not fill the memory).
+TEST(ReadLimits, InputsLargerThanTheLimitAreRefused) {
+    const std::string off = "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+    const std::string path = write_file(off, ".off");
+    EXPECT_EQ(read_mesh_file(path, ReadOptions{off.size()}).triangles.size(), 1u);
+    try {
+        (void)read_mesh_file(path, ReadOptions{off.size() - 1});
+        ADD_FAILURE() << "a file one byte over the limit was read";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("larger than the input limit of " + std::to_string(off.size() - 1) + " bytes"), std::string::npos) << e.what();
+    }
+    std::signal(SIGPIPE, SIG_IGN);  // the writer is left with a closed pipe: EPIPE, not a signal
+    std::string endless = off + "# ";
+    endless.append(std::size_t{8} << 20, 'x');
+    Pipe pipe("long.off", endless);
+    try {
+        (void)read_mesh_file(pipe.path, ReadOptions{std::uint64_t{1} << 20});
+        ADD_FAILURE() << "a pipe over the limit was read";
+    } catch (const InputError& e) {
+        EXPECT_EQ(std::string(e.what()).rfind(pipe.path, 0), 0u) << e.what();
+        EXPECT_NE(std::string(e.what()).find("larger than the input limit"), std::string::npos) << e.what();
+    }
 }
 
 // ---- STL: CGAL's own ASCII/binary fallback, made clean ------------------------------------------

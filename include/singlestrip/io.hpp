@@ -30,14 +30,25 @@
 
 namespace singlestrip {
 
-/// Reads a mesh file (see formats above) into a triangle soup, in file order.
+/// Limits of read_mesh_file.
+struct ReadOptions {
+    /// Files (and named pipes) with more bytes are refused before they are read past this size;
+    /// the bytes are held in memory once. 4 GiB is a binary STL of 85M triangles.
+    std::uint64_t max_input_bytes = std::uint64_t{4} << 30;
+};
+
+/// Reads a mesh file (see formats above) into a triangle soup, in file order. `path` may be a
+/// regular file or a named pipe (read once, to its end); the format comes from its extension.
 /// \throw InputError (message starts with the path) when the file is missing or unreadable,
-///        empty, has an unknown extension, is malformed or truncated, has a face index out of
-///        range ("face N references vertex K but the file has only M vertices"), a NaN or
-///        infinite coordinate ("vertex N"), a polygon with fewer than 3 corners, or no faces.
+///        not a regular file or a pipe (a device, a socket, a directory), larger than
+///        `options.max_input_bytes`, empty, has an unknown extension, is malformed or truncated,
+///        has a face index out of range ("face N references vertex K but the file has only M
+///        vertices"), a NaN or infinite coordinate ("vertex N"), a polygon with fewer than 3
+///        corners, or no faces.
 /// Structural problems (repeated vertex, non-manifold, orientation, ...) are NOT checked here:
-/// see validate.hpp. Complexity O(file size).
-TriangleSoup read_mesh_file(const std::string& path);
+/// see validate.hpp. Complexity O(file size); memory O(file size), never proportional to a
+/// count the file declares.
+TriangleSoup read_mesh_file(const std::string& path, const ReadOptions& options = {});
 
 /// Reads a constraint file: one polyline per line, written as whitespace-separated input vertex
 /// indices (0-based); '#' starts a comment; blank lines are ignored. A polyline a b c yields the

@@ -54,11 +54,16 @@ std::string lower_extension(const std::string& path) {
 [[noreturn]] void fail(const std::string& path, const std::string& what) { throw InputError(path + ": " + what); }
 
 /// Every byte of `in`, read to its end (a pipe has no size to ask for in advance).
-std::string read_all(std::istream& in, std::size_t expected_size) {
+/// Reads `in` to its end; std::nullopt as soon as it holds more than `max_bytes` (a pipe whose
+/// writer never stops must not fill the memory).
+std::optional<std::string> read_all(std::istream& in, std::size_t expected_size, std::uint64_t max_bytes) {
     std::string data;
     data.reserve(expected_size);
     char buffer[1 << 16];
-    while (in.read(buffer, sizeof buffer) || in.gcount() > 0) data.append(buffer, static_cast<std::size_t>(in.gcount()));
+    while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
+        if (data.size() + static_cast<std::uint64_t>(in.gcount()) > max_bytes) return std::nullopt;
+        data.append(buffer, static_cast<std::size_t>(in.gcount()));
+    }
     return data;
 }
 
@@ -1030,7 +1035,7 @@ bool read_stl(std::istringstream& in, std::vector<CgalPoint>& points, std::vecto
 
 }  // namespace
 
-TriangleSoup read_mesh_file(const std::string& path) {
+TriangleSoup read_mesh_file(const std::string& path, const ReadOptions& options) {
     const std::string ext = lower_extension(path);
     InFormat fmt;
     if (ext == ".obj") fmt = InFormat::Obj;
@@ -1053,9 +1058,13 @@ TriangleSoup read_mesh_file(const std::string& path) {
     {
         std::ifstream in(path, std::ios::binary);
         if (!in) fail(path, std::string("cannot open file for reading (") + std::strerror(errno) + ")");
-        const auto size = std::filesystem::is_regular_file(status) ? std::filesystem::file_size(path, ec) : 0;
-        data = read_all(in, ec ? 0 : static_cast<std::size_t>(size));
+        const std::uint64_t size = std::filesystem::is_regular_file(status) ? std::filesystem::file_size(path, ec) : 0;
+        const std::string too_large = "larger than the input limit of " + std::to_string(options.max_input_bytes) + " bytes (ReadOptions::max_input_bytes)";
+        if (!ec && size > options.max_input_bytes) fail(path, too_large);
+        auto bytes = read_all(in, ec ? 0 : static_cast<std::size_t>(size), options.max_input_bytes);
+        if (!bytes) fail(path, too_large);
         if (in.bad()) fail(path, "read error");
+        data = std::move(*bytes);
     }
     // Empty means no bytes, or only whitespace.
     if (std::all_of(data.begin(), data.end(), [](char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; })) fail(path, "empty file");
