@@ -53,8 +53,9 @@ std::string lower_extension(const std::string& path) {
 
 [[noreturn]] void fail(const std::string& path, const std::string& what) { throw InputError(path + ": " + what); }
 
-/// Every byte of `in`, read to its end (a pipe has no size to ask for in advance); std::nullopt as soon as it holds more than `max_bytes` (a pipe whose
-/// writer never stops must not fill the memory).
+/// Every byte of `in`, read to its end (a pipe has no size to ask for in advance); std::nullopt
+/// as soon as it holds more than `max_bytes` (a pipe whose writer never stops must not fill the
+/// memory).
 std::optional<std::string> read_all(std::istream& in, std::size_t expected_size, std::uint64_t max_bytes) {
     std::string data;
     data.reserve(expected_size);
