@@ -54,6 +54,9 @@ private:
 
 bool is_builtin(const std::string& input) { return input.rfind(kBuiltinPrefix, 0) == 0; }
 
+/// `--input-format`: the format of INPUT when its name does not tell (e.g. /dev/stdin).
+std::string g_input_format;
+
 /// Reads INPUT: a mesh file, or `builtin:genus2` (the demo model of generators.hpp).
 ss::TriangleSoup load_input(const std::string& input) {
     if (is_builtin(input)) {
@@ -61,7 +64,9 @@ ss::TriangleSoup load_input(const std::string& input) {
             throw ss::RequestError("unknown built-in model '" + input + "' (available: " + kBuiltinName + ")");
         return ss::make_builtin_model();
     }
-    return ss::read_mesh_file(input);
+    ss::ReadOptions read;
+    read.format = g_input_format;
+    return ss::read_mesh_file(input, read);
 }
 
 std::string yes_no(bool b) { return b ? "yes" : "no"; }
@@ -289,6 +294,7 @@ int run_verify(const VerifyArgs& a) {
         o.source = a.source;
         o.target = a.target;
         o.cycles_path = a.cycles;
+        o.input_format = g_input_format;
         rep = ss::verify_files(a.input, a.output, o);
     }
     std::cout << rep.to_string();
@@ -303,7 +309,8 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
     app.set_version_flag("--version", "singlestrip 0.1.0");
     app.footer(
-        "INPUT is a .obj, .off, .ply or .stl file, or builtin:genus2 (the demo model).\n"
+        "INPUT is a .obj, .off, .ply or .stl file (or a pipe such as /dev/stdin with --input-format),\n"
+        "or builtin:genus2 (the demo model).\n"
         "Exit codes: 0 ok, 2 usage, 3 bad input, 4 request cannot be met, 5 verification failed,\n"
         "6 internal error, 7 output not written.");
 
@@ -313,6 +320,9 @@ int main(int argc, char** argv) {
     info->add_option("INPUT", info_input, "Input mesh file or builtin:genus2")->required();
     info->add_flag("--json", info_json_flag, "Machine-readable JSON output");
     info->add_flag("--orient", info_orient, "Consistently re-orient an orientable mesh before reporting");
+    const char* kInputFormatHelp = "Format of INPUT (obj, off, ply, stl) when its name does not tell, e.g. /dev/stdin";
+    const auto input_format_check = CLI::IsMember({"obj", "off", "ply", "stl"}, CLI::ignore_case);
+    info->add_option("--input-format", g_input_format, kInputFormatHelp)->check(input_format_check);
 
     StripArgs sa;
     auto* strip = app.add_subcommand("strip", "Turn the mesh into one triangle strip");
@@ -328,6 +338,7 @@ int main(int argc, char** argv) {
     strip->add_option("--seed-face", sa.seed_face, "Input face to start the strip from");
     strip->add_flag("--no-greedy", sa.no_greedy, "Use the paper's plain same-direction turn rule");
     strip->add_flag("--orient", sa.orient, "Consistently re-orient an orientable mesh first");
+    strip->add_option("--input-format", g_input_format, kInputFormatHelp)->check(input_format_check);
     strip->add_option("--constraints", sa.constraints, "Edges the strip must not cross: one polyline of vertex indices per line");
     strip->add_option("--source", sa.source, "The strip starts at a face incident to this input vertex");
     strip->add_option("--target", sa.target, "The strip ends at a face incident to this input vertex");
@@ -343,6 +354,7 @@ int main(int argc, char** argv) {
     verify->add_option("--source", va.source, "Required first-face vertex");
     verify->add_option("--target", va.target, "Required last-face vertex");
     verify->add_option("--cycles", va.cycles, "Cycles JSON to check for independence");
+    verify->add_option("--input-format", g_input_format, kInputFormatHelp)->check(input_format_check);
 
 #ifdef SINGLESTRIP_HAVE_RENDER
     ss::render::RenderArgs ra;
@@ -385,6 +397,7 @@ int main(int argc, char** argv) {
                 ss::BatchOptions b;
                 b.out_dir = *sa.out_dir;
                 b.format = sa.format;
+                b.input_format = g_input_format;
                 b.write_indices = sa.with_indices;
                 b.cycles = sa.with_cycles;
                 b.greedy = !sa.no_greedy;

@@ -42,19 +42,21 @@ std::string stem_of(const std::string& input) {
     return s.empty() ? std::string("mesh") : s;
 }
 
-TriangleSoup load(const std::string& input) {
+TriangleSoup load(const std::string& input, const std::string& input_format) {
     if (input.rfind("builtin:", 0) == 0) {
         if (input != "builtin:genus2") throw RequestError("unknown built-in model '" + input + "' (available: builtin:genus2)");
         return make_builtin_model();
     }
-    return read_mesh_file(input);
+    ReadOptions read;
+    read.format = input_format;
+    return read_mesh_file(input, read);
 }
 
 /// Strips one file; fills `item` and writes its outputs. Throws on failure (caught by caller).
 void process(BatchItem& item, const BatchOptions& o, const std::string& base, json& report) {
     std::vector<std::string> written;  // removed again if a later step fails
     try {
-        TriangleSoup soup = prepare_soup(load(item.input), PrepareOptions{o.orient}, item.input);
+        TriangleSoup soup = prepare_soup(load(item.input, o.input_format), PrepareOptions{o.orient}, item.input);
         StripOptions opt;
         opt.greedy = o.greedy;
         opt.seed_face = o.seed_face;

@@ -1123,7 +1123,9 @@ VerifyReport verify(const VerifyInput& in) {
 VerifyReport verify_files(const std::string& in_path, const std::string& out_path, const VerifyFileOptions& options) {
     VerifyInput vi;
     {
-        TriangleSoup soup = read_mesh_file(in_path);
+        ReadOptions read;
+        read.format = options.input_format;
+        TriangleSoup soup = read_mesh_file(in_path, read);
         vi.in_points = std::move(soup.points);
         vi.in_faces = std::move(soup.triangles);
     }

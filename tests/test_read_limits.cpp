@@ -464,14 +464,20 @@ TEST(ReadLimits, PipesAreReadOnceAndDevicesAreRefused) {
     EXPECT_EQ(refused_path(device.string(), {"not a regular file"}), "");
 }
 
+ReadOptions limited_to(std::uint64_t max_input_bytes) {
+    ReadOptions o;
+    o.max_input_bytes = max_input_bytes;
+    return o;
+}
+
 // The whole input is held in memory once: a file or a pipe longer than the limit is refused, a
 // pipe as soon as the limit is passed (a writer that never stops must not fill the memory).
 TEST(ReadLimits, InputsLargerThanTheLimitAreRefused) {
     const std::string off = "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
     const std::string path = write_file(off, ".off");
-    EXPECT_EQ(read_mesh_file(path, ReadOptions{off.size()}).triangles.size(), 1u);
+    EXPECT_EQ(read_mesh_file(path, limited_to(off.size())).triangles.size(), 1u);
     try {
-        (void)read_mesh_file(path, ReadOptions{off.size() - 1});
+        (void)read_mesh_file(path, limited_to(off.size() - 1));
         ADD_FAILURE() << "a file one byte over the limit was read";
     } catch (const InputError& e) {
         EXPECT_NE(std::string(e.what()).find("larger than the input limit of " + std::to_string(off.size() - 1) + " bytes"), std::string::npos) << e.what();
@@ -481,11 +487,35 @@ TEST(ReadLimits, InputsLargerThanTheLimitAreRefused) {
     endless.append(std::size_t{8} << 20, 'x');
     Pipe pipe("long.off", endless);
     try {
-        (void)read_mesh_file(pipe.path, ReadOptions{std::uint64_t{1} << 20});
+        (void)read_mesh_file(pipe.path, limited_to(std::uint64_t{1} << 20));
         ADD_FAILURE() << "a pipe over the limit was read";
     } catch (const InputError& e) {
         EXPECT_EQ(std::string(e.what()).rfind(pipe.path, 0), 0u) << e.what();
         EXPECT_NE(std::string(e.what()).find("larger than the input limit"), std::string::npos) << e.what();
+    }
+}
+
+// ReadOptions::format reads a file whatever its name: a pipe, /dev/stdin, no extension.
+TEST(ReadLimits, FormatCanBeNamedInsteadOfTheExtension) {
+    const std::string off = "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+    ReadOptions as_off;
+    as_off.format = "OFF";
+    EXPECT_EQ(read_mesh_file(write_file(off, ".txt"), as_off).triangles.size(), 1u);
+    {
+        Pipe pipe("stdin_like", off);
+        EXPECT_EQ(read_mesh_file(pipe.path, as_off).triangles.size(), 1u);
+    }
+    EXPECT_EQ(refused(off, ".txt", {"unknown input format '.txt'"}), "");
+    ReadOptions as_obj;
+    as_obj.format = "obj";  // an OFF file read as OBJ has no 'v' or 'f' records
+    EXPECT_THROW((void)read_mesh_file(write_file(off, ".off"), as_obj), InputError);
+    ReadOptions bogus;
+    bogus.format = "3ds";
+    try {
+        (void)read_mesh_file(write_file(off, ".off"), bogus);
+        ADD_FAILURE() << "an unknown format name was accepted";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("unknown input format '3ds'"), std::string::npos) << e.what();
     }
 }
 

@@ -28,6 +28,7 @@ namespace singlestrip {
 struct BatchOptions {
     std::string out_dir;              ///< created if missing
     std::string format = "ply";       ///< result extension: ply, obj, off, glb or gltf
+    std::string input_format;         ///< ReadOptions::format for every input (empty: by extension)
     bool write_indices = false;       ///< also <stem>.indices.txt
     bool cycles = false;              ///< also <stem>.cycles.json (fundamental cycles)
     bool greedy = true;               ///< StripOptions::greedy

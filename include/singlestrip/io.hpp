@@ -35,13 +35,18 @@ struct ReadOptions {
     /// Files (and named pipes) with more bytes are refused before they are read past this size;
     /// the bytes are held in memory once. 4 GiB is a binary STL of 85M triangles.
     std::uint64_t max_input_bytes = std::uint64_t{4} << 30;
+    /// "obj", "off", "ply" or "stl" (any case) reads the file as that format whatever its name
+    /// (`/dev/stdin`, a pipe, a file without extension); empty: chosen by the extension.
+    std::string format;
 };
 
 /// Reads a mesh file (see formats above) into a triangle soup, in file order. `path` may be a
-/// regular file or a named pipe (read once, to its end); the format comes from its extension.
+/// regular file or a named pipe (read once, to its end); the format comes from its extension
+/// unless `options.format` names it.
 /// \throw InputError (message starts with the path) when the file is missing or unreadable,
 ///        not a regular file or a pipe (a device, a socket, a directory), larger than
-///        `options.max_input_bytes`, empty, has an unknown extension, is malformed or truncated,
+///        `options.max_input_bytes`, empty, has an unknown extension (or `options.format` is
+///        not one of the four), is malformed or truncated,
 ///        has a face index out of range ("face N references vertex K but the file has only M
 ///        vertices"), a NaN or infinite coordinate ("vertex N"), a polygon with fewer than 3
 ///        corners, or no faces.

@@ -99,6 +99,7 @@ struct VerifyFileOptions {
     std::optional<uint32_t> source;
     std::optional<uint32_t> target;
     std::optional<std::string> cycles_path;       ///< JSON {"cycles": [[face, ...], ...]}
+    std::string input_format;                     ///< ReadOptions::format for the input mesh
 };
 
 /// Reads the input mesh (read_mesh_file), the output mesh (read_output_mesh) and the optional

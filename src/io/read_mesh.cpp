@@ -1036,13 +1036,16 @@ bool read_stl(std::istringstream& in, std::vector<CgalPoint>& points, std::vecto
 }  // namespace
 
 TriangleSoup read_mesh_file(const std::string& path, const ReadOptions& options) {
-    const std::string ext = lower_extension(path);
+    std::string named = options.format;
+    std::transform(named.begin(), named.end(), named.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    const std::string ext = named.empty() ? lower_extension(path) : "." + named;
     InFormat fmt;
     if (ext == ".obj") fmt = InFormat::Obj;
     else if (ext == ".off") fmt = InFormat::Off;
     else if (ext == ".ply") fmt = InFormat::Ply;
     else if (ext == ".stl") fmt = InFormat::Stl;
-    else fail(path, "unknown input format '" + ext + "' (expected .obj, .off, .ply or .stl)");
+    else if (!named.empty()) fail(path, "unknown input format '" + options.format + "' (expected obj, off, ply or stl)");
+    else fail(path, "unknown input format '" + ext + "' (expected .obj, .off, .ply or .stl, or a format named with --input-format)");
 
     std::error_code ec;
     const auto status = std::filesystem::status(path, ec);
