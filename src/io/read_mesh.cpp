@@ -1129,6 +1129,8 @@ TriangleSoup read_mesh_file(const std::string& path, const ReadOptions& options)
         const std::optional<std::string> why = diagnose(true);
         fail(path, why ? *why : std::string("malformed or truncated ") + format_name(fmt) + " file");
     }
+    // Peak memory: the bytes, CGAL's arrays and the soup are never all held at once.
+    std::string().swap(data);
 
     // Checks CGAL does not make (or makes with an off-by-one, as its OBJ reader does).
     TriangleSoup soup;
@@ -1139,17 +1141,19 @@ TriangleSoup read_mesh_file(const std::string& path, const ReadOptions& options)
             fail(path, "vertex " + std::to_string(v) + " has a non-finite coordinate (NaN or infinity)");
         soup.points.push_back({p.x(), p.y(), p.z()});
     }
-    if (points.size() >= 0xffffffffu) fail(path, "too many vertices (more than 2^32-1)");
-    if (polygons.empty()) fail(path, "no faces (the file has " + std::to_string(points.size()) + " vertices and 0 faces)");
+    const std::size_t num_points = points.size();
+    std::vector<CgalPoint>().swap(points);
+    if (num_points >= 0xffffffffu) fail(path, "too many vertices (more than 2^32-1)");
+    if (polygons.empty()) fail(path, "no faces (the file has " + std::to_string(num_points) + " vertices and 0 faces)");
     std::size_t tris = 0;
     for (std::size_t f = 0; f < polygons.size(); ++f) {
         const auto& poly = polygons[f];
         if (poly.size() < 3)
             fail(path, "face " + std::to_string(f) + " has only " + std::to_string(poly.size()) + " vertices (at least 3 needed)");
         for (std::size_t idx : poly)
-            if (idx >= points.size())
+            if (idx >= num_points)
                 // CGAL stores OBJ's negative/relative indices wrapped; print them signed.
-                fail(path, index_problem(f, static_cast<long long>(static_cast<std::ptrdiff_t>(idx)), points.size()));
+                fail(path, index_problem(f, static_cast<long long>(static_cast<std::ptrdiff_t>(idx)), num_points));
         tris += poly.size() - 2;
     }
     soup.triangles.reserve(tris);
