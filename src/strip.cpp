@@ -922,9 +922,26 @@ StripResult Builder::run() {
 
 }  // namespace
 
-StripResult build_strip(Mesh mesh, const StripOptions& options) {
+StripResult build_strip_growth(Mesh mesh, const StripOptions& options) {
     Builder builder(std::move(mesh), options);
-    return builder.run();
+    StripResult r = builder.run();
+    r.stats.engine = StripEngine::Growth;
+    return r;
+}
+
+StripResult build_strip(Mesh mesh, const StripOptions& options) {
+    return options.engine == StripEngine::Growth ? build_strip_growth(std::move(mesh), options)
+                                                 : build_strip_matching(std::move(mesh), options);
+}
+
+const char* engine_name(StripEngine engine) noexcept {
+    return engine == StripEngine::Growth ? "growth" : "matching";
+}
+
+std::optional<StripEngine> parse_engine(std::string_view name) noexcept {
+    if (name == "matching") return StripEngine::Matching;
+    if (name == "growth") return StripEngine::Growth;
+    return std::nullopt;
 }
 
 StripArrays strip_arrays(const StripResult& result) {

@@ -13,6 +13,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -20,7 +21,23 @@
 
 namespace singlestrip {
 
+/// Which strip builder runs (docs/algorithm.md).
+enum class StripEngine : uint8_t {
+    /// Default. Dual-graph matching (Gopi & Eppstein 2004; Diaz-Gutierrez, Eppstein & Gopi 2006):
+    /// loops of a 2-factor with alternating turns, joined by one midpoint split each.
+    Matching,
+    /// The paper's §3 growth builder with deferred islands: the reference method.
+    Growth,
+};
+
+/// "matching" or "growth".
+const char* engine_name(StripEngine engine) noexcept;
+/// Parses "matching" / "growth"; std::nullopt for anything else.
+std::optional<StripEngine> parse_engine(std::string_view name) noexcept;
+
 struct StripOptions {
+    /// The strip builder. Both give one verified strip on every valid input.
+    StripEngine engine = StripEngine::Matching;
     /// Input face to start from. Default: a face on the mesh boundary when there is one (§4).
     std::optional<uint32_t> seed_face;
     /// Greedy turns (paper Algorithm 2) and the neighbour-count ordering; off = the paper's
@@ -45,6 +62,8 @@ struct StripStats {
     uint32_t detours = 0;           ///< islands spliced between two strip faces without a split
     long long genus = 0;
     uint32_t boundary_loops = 0;
+    StripEngine engine = StripEngine::Matching;  ///< the engine that built the strip
+    uint32_t loops = 0;  ///< matching engine: loops and paths of the 2-factor before joining
 };
 
 struct StripResult {
@@ -63,7 +82,13 @@ struct StripResult {
 /// not constraints) and valid. \throw RequestError for an out-of-range seed face, source or
 /// target, a constraint pair that is not a mesh edge, or constraints that disconnect the
 /// surface (message gives the pieces); InternalError on a broken invariant (bug).
+/// Runs options.engine. Complexity: growth O(F log F) plus O(F) per fundamental triangle search;
+/// matching O(F) expected (docs/algorithm.md).
 StripResult build_strip(Mesh mesh, const StripOptions& options = {});
+
+/// The engines themselves (build_strip() dispatches); same contract as build_strip().
+StripResult build_strip_growth(Mesh mesh, const StripOptions& options);
+StripResult build_strip_matching(Mesh mesh, const StripOptions& options);
 
 /// Output arrays in strip order: faces as vertex triples (orientation kept) and their parents.
 struct StripArrays {
