@@ -81,16 +81,23 @@ Cycles compute_fundamental_cycles(const StripResult& result) {
         pos[f] = i;
     }
     auto neighbor_ok = [&](uint32_t g, uint32_t t) { return g != kNone && g != t; };
+    // The growth builder records its fundamental triangles and when each face was taken; any
+    // other strip order gets them by replay, and its positions serve as take times: the faces
+    // after a fundamental triangle are then exactly the region it was removed from.
+    const bool recorded = result.take_time.size() == nf;
+    const std::vector<uint32_t> fundamental =
+        recorded ? result.fundamental_positions : replay_fundamental_positions(mesh, result.order);
+    const std::vector<uint32_t>& take_time = recorded ? result.take_time : pos;
 
     // Per fundamental triangle: candidate cycles as chains of MESH faces, shortest first.
     struct Candidate {
         CycleSource source = CycleSource::StripSegment;
         std::vector<uint32_t> faces;
     };
-    const size_t n = result.fundamental_positions.size();
+    const size_t n = fundamental.size();
     std::vector<std::vector<Candidate>> candidates(n);
     for (size_t i = 0; i < n; ++i) {
-        const uint32_t p = result.fundamental_positions[i];
+        const uint32_t p = fundamental[i];
         if (p >= nf) throw InternalError("fundamental cycles: fundamental position out of range");
         const uint32_t t = result.order[p];
         std::vector<uint32_t> nb;
@@ -158,14 +165,14 @@ Cycles compute_fundamental_cycles(const StripResult& result) {
         // (5) The paper's parallel path, shortest: T's neighbours taken after T were joined,
         // when T was taken, by the faces still unstriped then (the faces taken later); a
         // breadth-first path through those closes the cycle. Independent of strip positions.
-        if (result.take_time.size() == nf) {
-            const uint32_t tt = result.take_time[t];
+        {
+            const uint32_t tt = take_time[t];
             std::vector<uint32_t> later;
             for (uint32_t g : nb)
-                if (result.take_time[g] != kNone && result.take_time[g] > tt) later.push_back(g);
+                if (take_time[g] != kNone && take_time[g] > tt) later.push_back(g);
             for (size_t x = 0; x < later.size(); ++x)
                 for (size_t y = x + 1; y < later.size(); ++y) {
-                    std::vector<uint32_t> path = bfs_path(mesh, later[x], later[y], t, &result.take_time, tt);
+                    std::vector<uint32_t> path = bfs_path(mesh, later[x], later[y], t, &take_time, tt);
                     if (path.empty()) continue;
                     path.insert(path.begin(), t);
                     cand.push_back({CycleSource::ParallelPath, std::move(path)});

@@ -1,7 +1,25 @@
 // singlestrip — fundamental cycles from the strip's linear order (Gopi, §4, Algorithms 3 and 4).
 //
-// Each fundamental triangle T met during stripification (StripResult::fundamental_positions)
-// gets one cycle. With positions taken in the strip order, D = the neighbour of T with the largest
+// Which fundamental triangles, per engine.
+//   * Growth (StripResult::take_time has one entry per face): the builder tracks the first Betti
+//     number of the unstriped region and records the triangles that lower it
+//     (StripResult::fundamental_positions) and when each face was taken (take_time).
+//   * Matching, or any strip without those records (take_time empty or of the wrong size):
+//     replay_fundamental_positions() replays the strip order. The unstriped region before
+//     position i is the suffix U_i (faces at positions >= i); the face at position i is
+//     fundamental when beta1(U_{i+1}) < beta1(U_i). Faces are added back in reverse order with
+//     a union–find for the components (b0) and a local update of chi, a vertex counted once per
+//     fan piece of the region: a new face with s edges shared with the region adds
+//     1 - (3 - s) to chi, +1 per vertex where it shares no edge, -1 per vertex where it shares
+//     both edges unless it closes that vertex's fan (all its other faces already in, vertex not
+//     on the mesh boundary); beta1 = b0 - chi (+1 once the whole closed surface is back).
+//     O(F alpha(F)). Positions then serve as take times: the region "still unstriped" after T is
+//     exactly the faces after it, and the parallel path (5) runs through them.
+// Either way the cycles are made by the rules below; the replay's triangles always yield a
+// spanning set of parallel paths (each one a class new to H1 of the suffix), so the tree–cotree
+// fallback stays a safety net.
+//
+// Each fundamental triangle T gets one cycle. With positions taken in the strip order, D = the neighbour of T with the largest
 // position and S = the one with the second largest, the candidates for T are:
 //   (1) steepest ascent (Algorithm 4): T, S, M1, ..., D, each M the neighbour of the previous
 //       face with the largest position not beyond D's (D is taken as soon as it is adjacent). A
@@ -64,12 +82,21 @@ struct Cycles {
 };
 
 /// Fundamental cycles of the strip (see the top of this header).
-/// \pre `result` comes from build_strip(): `order` is a permutation of the mesh faces in which
-///      consecutive faces share an edge; `fundamental_positions` index into `order`.
+/// \pre `result` comes from build_strip(), either engine: `order` is a permutation of the mesh
+///      faces in which consecutive faces share an edge; when `take_time` has one entry per face,
+///      `fundamental_positions` index into `order` (else they are ignored and found by replay).
 /// \throw InternalError if a precondition is broken (a fundamental triangle without two
 ///        neighbours, or no path from S to D avoiding T).
 /// Cycles::sources is filled (one entry per cycle).
 Cycles compute_fundamental_cycles(const StripResult& result);
+
+/// Fundamental triangles of any strip order, by replay: positions i (ascending) at which removing
+/// face order[i] from the unstriped suffix U_i = {order[j] : j >= i} lowers its first Betti
+/// number, each repeated by how much it lowers it (more than once only at position 0).
+/// Adjacency is plain mesh adjacency. See "Which fundamental triangles" above.
+/// \pre `order` is a permutation of the faces of a valid, edge-connected mesh.
+/// \throw InternalError if `order` is not a permutation. O(F alpha(F)).
+std::vector<uint32_t> replay_fundamental_positions(const Mesh& mesh, const std::vector<uint32_t>& order);
 
 /// Length of the closed polyline through the face centroids and the midpoints of the edges
 /// shared by consecutive faces (last -> first included), faces given as indices into
