@@ -33,7 +33,9 @@ struct Rng {
     size_t below(size_t n) { return static_cast<size_t>(next() % n); }
 };
 
-uint64_t edge_key(uint32_t a, uint32_t b) { return (uint64_t{a} << 32) | b; }
+uint64_t edge_key(uint32_t a, uint32_t b) {
+    return (uint64_t{a} << 32) | b;
+}
 
 /// Grid of nx x ny cells of size `cell`, keeping the cells for which keep(i, j) is true;
 /// vertices no kept cell uses are dropped (indices compacted, row-major order kept).
@@ -80,6 +82,50 @@ std::unordered_map<uint64_t, uint32_t> directed_edges(const TriangleSoup& soup) 
     return map;
 }
 
+/// Removes the faces marked in `removed` and the vertices no remaining face uses (indices
+/// compacted, order kept).
+TriangleSoup drop_faces(const TriangleSoup& in, const std::vector<char>& removed) {
+    std::vector<uint32_t> id(in.points.size(), kUnused);
+    for (size_t f = 0; f < in.triangles.size(); ++f)
+        if (!removed[f])
+            for (uint32_t v : in.triangles[f]) id[v] = 0;
+    TriangleSoup out;
+    for (uint32_t v = 0; v < id.size(); ++v) {
+        if (id[v] == kUnused) continue;
+        id[v] = static_cast<uint32_t>(out.points.size());
+        out.points.push_back(in.points[v]);
+    }
+    for (size_t f = 0; f < in.triangles.size(); ++f) {
+        if (removed[f]) continue;
+        const Triangle& t = in.triangles[f];
+        out.triangles.push_back({id[t[0]], id[t[1]], id[t[2]]});
+    }
+    return out;
+}
+
+/// Triangulates the convex polygon `ring` (CCW as it should face) by halving: each level cuts
+/// off the triangles (p[i], p[i+1], p[i+2]) for even i and keeps every other vertex, so no
+/// vertex gains more than two edges per level (O(log n) valence instead of a fan's n).
+void triangulate_by_halving(std::vector<uint32_t> ring, std::vector<Triangle>& out) {
+    while (ring.size() >= 3) {
+        const size_t n = ring.size();
+        if (n == 3) {
+            out.push_back({ring[0], ring[1], ring[2]});
+            return;
+        }
+        std::vector<uint32_t> kept;
+        for (size_t i = 0; i < n; i += 2) {
+            kept.push_back(ring[i]);
+            if (i + 1 < n) out.push_back({ring[i], ring[i + 1], ring[(i + 2) % n]});
+        }
+        ring = std::move(kept);
+    }
+}
+
+uint32_t rounded(double x) {
+    return static_cast<uint32_t>(std::max(1.0, std::round(x)));
+}
+
 }  // namespace
 
 TriangleSoup make_single_triangle() {
@@ -89,7 +135,9 @@ TriangleSoup make_single_triangle() {
     return s;
 }
 
-TriangleSoup make_two_triangles() { return grid_cells(1, 1, 1.0, [](uint32_t, uint32_t) { return true; }); }
+TriangleSoup make_two_triangles() {
+    return grid_cells(1, 1, 1.0, [](uint32_t, uint32_t) { return true; });
+}
 
 TriangleSoup make_fan(uint32_t k) {
     require(k >= 1, "fan needs k >= 1");
@@ -108,8 +156,10 @@ TriangleSoup make_corridor(uint32_t k) {
     // Even vertices on the top row, odd ones on the bottom row: the GL strip 0,1,2,... is CCW.
     for (uint32_t i = 0; i < k + 2; ++i) s.points.push_back({0.5 * i, i % 2 == 0 ? 1.0 : 0.0, 0});
     for (uint32_t i = 0; i < k; ++i) {
-        if (i % 2 == 0) s.triangles.push_back({i, i + 1, i + 2});
-        else s.triangles.push_back({i + 1, i, i + 2});
+        if (i % 2 == 0)
+            s.triangles.push_back({i, i + 1, i + 2});
+        else
+            s.triangles.push_back({i + 1, i, i + 2});
     }
     return s;
 }
@@ -155,11 +205,10 @@ TriangleSoup make_icosphere(uint32_t subdivisions) {
     require(subdivisions <= 10, "icosphere needs subdivisions <= 10");
     const double t = (1.0 + std::sqrt(5.0)) / 2.0;
     TriangleSoup s;
-    s.points = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
-                {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
-    s.triangles = {{0, 11, 5}, {0, 5, 1}, {0, 1, 7}, {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
-                   {11, 10, 2}, {10, 7, 6}, {7, 1, 8}, {3, 9, 4}, {3, 4, 2}, {3, 2, 6}, {3, 6, 8},
-                   {3, 8, 9}, {4, 9, 5}, {2, 4, 11}, {6, 2, 10}, {8, 6, 7}, {9, 8, 1}};
+    s.points = {{-1, t, 0},  {1, t, 0},  {-1, -t, 0}, {1, -t, 0}, {0, -1, t},  {0, 1, t},
+                {0, -1, -t}, {0, 1, -t}, {t, 0, -1},  {t, 0, 1},  {-t, 0, -1}, {-t, 0, 1}};
+    s.triangles = {{0, 11, 5}, {0, 5, 1}, {0, 1, 7}, {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
+                   {3, 9, 4},  {3, 4, 2}, {3, 2, 6}, {3, 6, 8},  {3, 8, 9},   {4, 9, 5}, {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
     for (uint32_t level = 0; level < subdivisions; ++level) {
         std::unordered_map<uint64_t, uint32_t> mid;
         auto midpoint = [&](uint32_t a, uint32_t b) {
@@ -373,8 +422,8 @@ void remove_random_faces_as_holes(TriangleSoup& soup, size_t k, uint64_t seed) {
         ++taken;
     }
     if (taken < k)
-        throw RequestError("remove_random_faces_as_holes: only " + std::to_string(taken) +
-                           " isolated interior faces available, " + std::to_string(k) + " requested");
+        throw RequestError("remove_random_faces_as_holes: only " + std::to_string(taken) + " isolated interior faces available, " +
+                           std::to_string(k) + " requested");
     const bool has_sources = soup.source_polygon.size() == soup.triangles.size();
     size_t out = 0;
     for (size_t f = 0; f < soup.triangles.size(); ++f) {
@@ -385,6 +434,216 @@ void remove_random_faces_as_holes(TriangleSoup& soup, size_t k, uint64_t seed) {
     }
     soup.triangles.resize(out);
     if (has_sources) soup.source_polygon.resize(out);
+}
+
+std::vector<std::pair<uint32_t, uint32_t>> polyline_edges(const Polylines& lines) {
+    std::vector<std::pair<uint32_t, uint32_t>> edges;
+    for (const auto& line : lines)
+        for (size_t i = 0; i + 1 < line.size(); ++i) edges.push_back({line[i], line[i + 1]});
+    return edges;
+}
+
+TriangleSoup make_hole_corridors(uint32_t holes, uint32_t length) {
+    require(length >= 1, "hole corridors need length >= 1");
+    return grid_cells(length + 2, 2 * holes + 1, 1.0, [length](uint32_t i, uint32_t j) { return !(j % 2 == 1 && i >= 1 && i <= length); });
+}
+
+TriangleSoup make_slit_corridors(uint32_t slits, uint32_t length) {
+    require(length >= 2, "slit corridors need length >= 2");
+    const uint32_t nx = length + 2, ny = slits + 1, w = nx + 1;
+    TriangleSoup s = grid_cells(nx, ny, 1.0, [](uint32_t, uint32_t) { return true; });
+    // Grid vertex (x, y) is y*w + x (no cell dropped). Slit y = k has inner vertices x = 2..length.
+    const uint32_t grid_vertices = static_cast<uint32_t>(s.points.size());
+    auto copy_of = [&](uint32_t v) -> uint32_t {
+        const uint32_t x = v % w, y = v / w;
+        if (y < 1 || y > slits || x < 2 || x > length) return v;
+        return grid_vertices + (y - 1) * (length - 1) + (x - 2);
+    };
+    for (uint32_t k = 1; k <= slits; ++k)
+        for (uint32_t x = 2; x <= length; ++x) s.points.push_back(s.points[k * w + x]);
+    // Cell row j's lower corners lie on line y = j: the cells above a slit take the copies.
+    for (Triangle& t : s.triangles) {
+        const uint32_t row = std::min({t[0], t[1], t[2]}) / w;
+        for (uint32_t& v : t)
+            if (v / w == row) v = copy_of(v);
+    }
+    return s;
+}
+
+WalledMesh make_slit_walls(uint32_t slits, uint32_t length) {
+    require(length >= 1, "slit walls need length >= 1");
+    WalledMesh m{make_grid_disk(length + 2, slits + 1), {}};
+    const uint32_t w = length + 3;
+    for (uint32_t k = 1; k <= slits; ++k) {
+        std::vector<uint32_t> line;
+        for (uint32_t x = 1; x <= length + 1; ++x) line.push_back(k * w + x);
+        m.walls.push_back(std::move(line));
+    }
+    return m;
+}
+
+WalledMesh make_serpentine_walls(uint32_t walls, uint32_t length) {
+    require(length >= 2, "serpentine walls need length >= 2");
+    WalledMesh m{make_grid_disk(length, 2 * (walls + 1)), {}};
+    const uint32_t w = length + 1;
+    for (uint32_t k = 1; k <= walls; ++k) {
+        const uint32_t first = k % 2 == 1 ? 0 : 1;  // alternate sides: the gaps zigzag
+        std::vector<uint32_t> line;
+        for (uint32_t x = first; x <= first + length - 1; ++x) line.push_back(2 * k * w + x);
+        m.walls.push_back(std::move(line));
+    }
+    return m;
+}
+
+TriangleSoup make_disk_many_holes(uint32_t bx, uint32_t by) {
+    require(bx >= 1 && by >= 1, "disk with many holes needs bx, by >= 1");
+    const uint32_t n = 10 * bx;
+    const TriangleSoup grid = grid_cells(n, 10 * by, 1.0, [](uint32_t, uint32_t) { return true; });
+    // grid_cells emits cell (i, j)'s two faces at 2(j n + i) and 2(j n + i) + 1; for a cell with
+    // i + j even the first is (a, b, c), a corner triangle.
+    std::vector<char> removed(grid.triangles.size(), 0);
+    auto remove_cell = [&](uint32_t i, uint32_t j, bool both) {
+        const size_t f = 2 * (static_cast<size_t>(j) * n + i);
+        removed[f] = 1;
+        if (both) removed[f + 1] = 1;
+    };
+    for (uint32_t b = 0; b < by; ++b) {
+        for (uint32_t a = 0; a < bx; ++a) {
+            const uint32_t x = 10 * a + 5, y = 10 * b + 5;
+            if (a % 3 == 0) remove_cell(x, y, false);
+            if (a % 3 == 1) remove_cell(x, y, true);
+            if (a % 3 == 2)
+                for (uint32_t dy = 0; dy < 2; ++dy)
+                    for (uint32_t dx = 0; dx < 2; ++dx) remove_cell(x - 1 + dx, y - 1 + dy, true);
+        }
+    }
+    return drop_faces(grid, removed);
+}
+
+TriangleSoup make_eared_grid(uint32_t nx, uint32_t ny) {
+    require(nx >= 1 && ny >= 1, "eared grid needs nx, ny >= 1");
+    TriangleSoup s = grid_cells(nx, ny, 1.0, [](uint32_t, uint32_t) { return true; });
+    const uint32_t w = nx + 1;
+    auto add_point = [&](double x, double y) {
+        s.points.push_back({x, y, 0.0});
+        return static_cast<uint32_t>(s.points.size() - 1);
+    };
+    for (uint32_t x = 0; x < nx; ++x) {
+        // Bottom edge a -> b belongs to the grid; T = (b, a, p) below it, ear (p, a, q) on a-p.
+        const uint32_t a = x, b = x + 1;
+        const uint32_t p = add_point(x + 0.5, -0.5), q = add_point(x - 0.3, -0.6);
+        s.triangles.push_back({b, a, p});
+        s.triangles.push_back({p, a, q});
+    }
+    for (uint32_t x = 0; x < nx; ++x) {
+        // Top edge b -> a belongs to the grid; T = (a, b, p) above it, ear (a, p, q) on p-a.
+        const uint32_t a = ny * w + x, b = a + 1;
+        const uint32_t p = add_point(x + 0.5, ny + 0.5), q = add_point(x - 0.3, ny + 0.6);
+        s.triangles.push_back({a, b, p});
+        s.triangles.push_back({a, p, q});
+    }
+    return s;
+}
+
+TriangleSoup make_cone(uint32_t k, bool capped) {
+    require(k >= 3, "cone needs k >= 3");
+    TriangleSoup s;
+    s.points.push_back({0, 0, 1});
+    for (uint32_t i = 0; i < k; ++i) {
+        const double a = 2 * kPi * i / k;
+        s.points.push_back({std::cos(a), std::sin(a), 0});
+    }
+    for (uint32_t i = 0; i < k; ++i) s.triangles.push_back({0, 1 + i, 1 + (i + 1) % k});
+    if (capped) {
+        std::vector<uint32_t> ring;  // clockwise seen from +z: the cap faces down (outward)
+        for (uint32_t i = k; i >= 1; --i) ring.push_back(i);
+        triangulate_by_halving(std::move(ring), s.triangles);
+    }
+    return s;
+}
+
+const char* awkward_family_name(AwkwardFamily family) noexcept {
+    switch (family) {
+        case AwkwardFamily::HoleCorridors:
+            return "hole_corridors";
+        case AwkwardFamily::SlitCorridors:
+            return "slit_corridors";
+        case AwkwardFamily::SlitWalls:
+            return "slit_walls";
+        case AwkwardFamily::SerpentineWalls:
+            return "serpentine_walls";
+        case AwkwardFamily::ManyHoles:
+            return "many_holes";
+        case AwkwardFamily::Ears:
+            return "ears";
+        case AwkwardFamily::OpenCone:
+            return "open_cone";
+        case AwkwardFamily::ClosedCone:
+            return "closed_cone";
+    }
+    return "unknown";
+}
+
+WalledMesh make_awkward(AwkwardFamily family, uint32_t triangles) {
+    const double f = std::max<double>(triangles, 1.0);
+    switch (family) {
+        case AwkwardFamily::HoleCorridors: {
+            // F = 2((L+2)(2h+1) - hL) = 2(L(h+1) + 4h + 2); L ~ 2h keeps the grid square.
+            const uint32_t h = rounded(std::sqrt(f / 4));
+            const uint32_t len = rounded((f / 2 - 4.0 * h - 2) / (h + 1));
+            return {make_hole_corridors(h, len), {}};
+        }
+        case AwkwardFamily::SlitCorridors:
+        case AwkwardFamily::SlitWalls: {
+            // F = 2(L+2)(s+1).
+            const uint32_t rows = rounded(std::sqrt(f / 2));
+            const uint32_t len = std::max(2u, rounded(f / (2.0 * rows) - 2));
+            if (family == AwkwardFamily::SlitWalls) return make_slit_walls(rows - 1, len);
+            return {make_slit_corridors(rows - 1, len), {}};
+        }
+        case AwkwardFamily::SerpentineWalls: {
+            // F = 4L(w+1), grid L x 2(w+1).
+            const uint32_t half_rows = rounded(std::sqrt(f / 8));
+            return make_serpentine_walls(half_rows - 1, std::max(2u, rounded(f / (4.0 * half_rows))));
+        }
+        case AwkwardFamily::ManyHoles: {
+            const uint32_t by = rounded(std::sqrt(f / 200));  // F ~ 200 bx by
+            return {make_disk_many_holes(rounded(f / (200.0 * by)), by), {}};
+        }
+        case AwkwardFamily::Ears:
+            return {make_eared_grid(rounded(f / 12), 4), {}};  // F = 12 nx
+        case AwkwardFamily::OpenCone:
+            return {make_cone(std::max(3u, rounded(f)), false), {}};
+        case AwkwardFamily::ClosedCone:
+            return {make_cone(std::max(3u, rounded(f / 2 + 1)), true), {}};
+    }
+    throw RequestError("generator: unknown awkward family");
+}
+
+std::vector<uint32_t> shuffle_vertices(TriangleSoup& soup, uint64_t seed) {
+    const size_t n = soup.points.size();
+    std::vector<uint32_t> new_of_old(n);
+    for (uint32_t v = 0; v < n; ++v) new_of_old[v] = v;
+    Rng rng{seed};
+    for (size_t i = n; i > 1; --i) std::swap(new_of_old[i - 1], new_of_old[rng.below(i)]);
+    std::vector<Point3> points(n);
+    for (size_t v = 0; v < n; ++v) points[new_of_old[v]] = soup.points[v];
+    soup.points = std::move(points);
+    for (Triangle& t : soup.triangles)
+        for (uint32_t& v : t) v = new_of_old[v];
+    return new_of_old;
+}
+
+void shuffle_faces(TriangleSoup& soup, uint64_t seed) {
+    const size_t n = soup.triangles.size();
+    const bool has_sources = soup.source_polygon.size() == n;
+    Rng rng{seed};
+    for (size_t i = n; i > 1; --i) {
+        const size_t j = rng.below(i);
+        std::swap(soup.triangles[i - 1], soup.triangles[j]);
+        if (has_sources) std::swap(soup.source_polygon[i - 1], soup.source_polygon[j]);
+    }
+    for (Triangle& t : soup.triangles) std::rotate(t.begin(), t.begin() + static_cast<long>(rng.below(3)), t.end());
 }
 
 }  // namespace singlestrip

@@ -2,10 +2,12 @@
 // Mesh::from_soup + validate(); counts and topology must match generators.hpp.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <map>
 #include <numeric>
+#include <set>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -34,7 +36,9 @@ struct Dsu {
     }
 };
 
-uint64_t key(uint32_t a, uint32_t b) { return (uint64_t{a} << 32) | b; }
+uint64_t key(uint32_t a, uint32_t b) {
+    return (uint64_t{a} << 32) | b;
+}
 
 /// Independent topology of a soup (no use of Mesh).
 struct Topology {
@@ -121,8 +125,7 @@ double signed_volume6(const TriangleSoup& s) {
     double vol = 0;
     for (const Triangle& t : s.triangles) {
         const Point3 &a = s.points[t[0]], &b = s.points[t[1]], &c = s.points[t[2]];
-        vol += a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
-               a[2] * (b[0] * c[1] - b[1] * c[0]);
+        vol += a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) + a[2] * (b[0] * c[1] - b[1] * c[0]);
     }
     return vol;
 }
@@ -163,7 +166,9 @@ void check_topology(const TriangleSoup& s, const Expect& e, const std::string& w
     EXPECT_EQ(m.num_referenced_vertices(), static_cast<uint32_t>(e.V));
 }
 
-long long pow4(uint32_t s) { return 1LL << (2 * s); }
+long long pow4(uint32_t s) {
+    return 1LL << (2 * s);
+}
 
 struct HolesCounts {
     long long V, F, boundary_edges;
@@ -353,4 +358,251 @@ TEST(Generators, RandomHolesKeepTopology) {
     }
     TriangleSoup tiny = make_two_triangles();
     EXPECT_THROW(remove_random_faces_as_holes(tiny, 1, 1), RequestError);
+}
+
+// ---- awkward families (issue 15) ----
+
+namespace {
+
+std::map<std::pair<uint32_t, uint32_t>, int> undirected_edge_faces(const TriangleSoup& s) {
+    std::map<std::pair<uint32_t, uint32_t>, int> count;
+    for (const Triangle& t : s.triangles)
+        for (int k = 0; k < 3; ++k) ++count[{std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3])}];
+    return count;
+}
+
+long long boundary_edge_count(const TriangleSoup& s) {
+    long long n = 0;
+    for (const auto& [e, c] : undirected_edge_faces(s)) n += c == 1;
+    return n;
+}
+
+/// Walls must run along interior edges and leave the faces edge-connected.
+void check_walls(const TriangleSoup& s, const Polylines& walls, const std::string& what) {
+    SCOPED_TRACE(what);
+    const auto edges = undirected_edge_faces(s);
+    std::set<std::pair<uint32_t, uint32_t>> cut;
+    for (auto [a, b] : polyline_edges(walls)) {
+        const auto e = std::make_pair(std::min(a, b), std::max(a, b));
+        ASSERT_TRUE(edges.count(e)) << a << "-" << b << " is not an edge";
+        cut.insert(e);
+    }
+    std::map<std::pair<uint32_t, uint32_t>, uint32_t> first_face;
+    Dsu d(s.triangles.size());
+    size_t pieces = s.triangles.size();
+    for (uint32_t f = 0; f < s.triangles.size(); ++f)
+        for (int k = 0; k < 3; ++k) {
+            const Triangle& t = s.triangles[f];
+            const auto e = std::make_pair(std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3]));
+            if (cut.count(e)) continue;
+            auto [it, fresh] = first_face.emplace(e, f);
+            if (!fresh && d.unite(it->second, f)) --pieces;
+        }
+    EXPECT_EQ(pieces, 1u) << "walls cut the surface apart";
+}
+
+/// Faces with one passable (interior) edge whose neighbour across it has exactly two.
+size_t ears_next_to_two_edge_faces(const TriangleSoup& s) {
+    const auto edges = undirected_edge_faces(s);
+    std::map<std::pair<uint32_t, uint32_t>, std::vector<uint32_t>> faces_of;
+    std::vector<int> passable(s.triangles.size(), 0);
+    for (uint32_t f = 0; f < s.triangles.size(); ++f)
+        for (int k = 0; k < 3; ++k) {
+            const Triangle& t = s.triangles[f];
+            const auto e = std::make_pair(std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3]));
+            faces_of[e].push_back(f);
+            passable[f] += edges.at(e) == 2;
+        }
+    size_t n = 0;
+    for (const auto& [e, fs] : faces_of)
+        if (fs.size() == 2)
+            for (int i = 0; i < 2; ++i) n += passable[fs[i]] == 1 && passable[fs[1 - i]] == 2;
+    return n;
+}
+
+std::vector<size_t> valences(const TriangleSoup& s) {
+    std::vector<size_t> v(s.points.size(), 0);
+    for (const auto& [e, c] : undirected_edge_faces(s)) ++v[e.first], ++v[e.second];
+    return v;
+}
+
+}  // namespace
+
+TEST(AwkwardGenerators, HoleCorridors) {
+    for (uint32_t holes : {0u, 1u, 2u, 7u})
+        for (uint32_t len : {1u, 2u, 9u}) {
+            const TriangleSoup s = make_hole_corridors(holes, len);
+            const long long h = holes, nx = len + 2, ny = 2 * h + 1;
+            check_topology(s, {(nx + 1) * (ny + 1), 2 * (nx * ny - h * len), 1 - h, h + 1, 0},
+                           "hole corridors " + std::to_string(holes) + " x " + std::to_string(len));
+            EXPECT_GT(min_signed_area2(s), 0);
+        }
+}
+
+TEST(AwkwardGenerators, SlitCorridorsAreCuts) {
+    for (uint32_t slits : {0u, 1u, 2u, 6u})
+        for (uint32_t len : {2u, 3u, 10u}) {
+            const TriangleSoup s = make_slit_corridors(slits, len);
+            const long long k = slits, nx = len + 2, ny = k + 1;
+            const std::string what = "slit corridors " + std::to_string(slits) + " x " + std::to_string(len);
+            check_topology(s, {(nx + 1) * (ny + 1) + k * (len - 1LL), 2 * nx * ny, 1 - k, k + 1, 0}, what);
+            EXPECT_GT(min_signed_area2(s), 0);
+            // Each cut edge is boundary on both sides: the border plus two copies per slit edge.
+            EXPECT_EQ(boundary_edge_count(s), 2 * (nx + ny) + 2 * k * len) << what;
+        }
+}
+
+TEST(AwkwardGenerators, SlitAndSerpentineWalls) {
+    for (uint32_t n : {0u, 1u, 2u, 5u})
+        for (uint32_t len : {2u, 3u, 8u}) {
+            const std::string tag = std::to_string(n) + " x " + std::to_string(len);
+            const WalledMesh slit = make_slit_walls(n, len);
+            const long long nx = len + 2, ny = n + 1;
+            check_topology(slit.soup, {(nx + 1) * (ny + 1), 2 * nx * ny, 1, 1, 0}, "slit walls " + tag);
+            ASSERT_EQ(slit.walls.size(), n);
+            for (const auto& w : slit.walls) EXPECT_EQ(w.size(), len + 1u);
+            check_walls(slit.soup, slit.walls, "slit walls " + tag);
+            const WalledMesh serp = make_serpentine_walls(n, len);
+            check_topology(serp.soup, {(len + 1LL) * (2 * n + 3), 4LL * len * (n + 1), 1, 1, 0}, "serpentine " + tag);
+            ASSERT_EQ(serp.walls.size(), n);
+            for (const auto& w : serp.walls) EXPECT_EQ(w.size(), len);
+            check_walls(serp.soup, serp.walls, "serpentine " + tag);
+        }
+    EXPECT_EQ(polyline_edges({{4, 5, 6}, {1}, {7, 8}}), (std::vector<std::pair<uint32_t, uint32_t>>{{4, 5}, {5, 6}, {7, 8}}));
+}
+
+TEST(AwkwardGenerators, SerpentineWallsLeaveOnePath) {
+    // Walls attached to alternate borders: cutting the gap column too splits the surface, so the
+    // corridors really are joined only through their one-cell gaps.
+    const WalledMesh m = make_serpentine_walls(3, 6);
+    const uint32_t w = 7;
+    Polylines closed = m.walls;
+    closed[0].push_back(2 * w + 6);  // close wall 1's gap at the right border
+    const auto edges = polyline_edges(closed);
+    std::set<std::pair<uint32_t, uint32_t>> cut;
+    for (auto [a, b] : edges) cut.insert({std::min(a, b), std::max(a, b)});
+    Dsu d(m.soup.triangles.size());
+    std::map<std::pair<uint32_t, uint32_t>, uint32_t> first;
+    size_t pieces = m.soup.triangles.size();
+    for (uint32_t f = 0; f < m.soup.triangles.size(); ++f)
+        for (int k = 0; k < 3; ++k) {
+            const Triangle& t = m.soup.triangles[f];
+            const auto e = std::make_pair(std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3]));
+            if (cut.count(e)) continue;
+            auto [it, fresh] = first.emplace(e, f);
+            if (!fresh && d.unite(it->second, f)) --pieces;
+        }
+    EXPECT_EQ(pieces, 2u);
+}
+
+TEST(AwkwardGenerators, DiskWithManyHoles) {
+    for (uint32_t bx : {1u, 2u, 3u, 7u})
+        for (uint32_t by : {1u, 4u}) {
+            const TriangleSoup s = make_disk_many_holes(bx, by);
+            long long h[3] = {0, 0, 0};
+            for (uint32_t a = 0; a < bx; ++a) h[a % 3] += by;
+            const long long nx = 10LL * bx, ny = 10LL * by, holes = 1LL * bx * by;
+            check_topology(s, {(nx + 1) * (ny + 1) - h[2], 2 * nx * ny - h[0] - 2 * h[1] - 8 * h[2], 1 - holes, 1 + holes, 0},
+                           "many holes " + std::to_string(bx) + " x " + std::to_string(by));
+            EXPECT_GT(min_signed_area2(s), 0);
+            const double per_hole = static_cast<double>(s.triangles.size()) / static_cast<double>(holes);
+            EXPECT_GT(per_hole, 190.0);
+            EXPECT_LE(per_hole, 200.0);
+        }
+}
+
+TEST(AwkwardGenerators, EaredGrid) {
+    for (uint32_t nx : {1u, 2u, 5u, 30u})
+        for (uint32_t ny : {1u, 4u}) {
+            const TriangleSoup s = make_eared_grid(nx, ny);
+            const std::string what = "eared grid " + std::to_string(nx) + " x " + std::to_string(ny);
+            check_topology(s, {(nx + 1LL) * (ny + 1) + 4 * nx, 2LL * nx * ny + 4 * nx, 1, 1, 0}, what);
+            EXPECT_GT(min_signed_area2(s), 0);
+            EXPECT_EQ(ears_next_to_two_edge_faces(s), 2u * nx) << what;
+        }
+}
+
+TEST(AwkwardGenerators, Cones) {
+    for (uint32_t k : {3u, 4u, 5u, 17u, 1000u, 10000u}) {
+        const std::string what = "cone " + std::to_string(k);
+        const TriangleSoup open = make_cone(k, false);
+        check_topology(open, {k + 1LL, k, 1, 1, 0}, what + " open");
+        EXPECT_EQ(valences(open)[0], k);
+        const TriangleSoup closed = make_cone(k, true);
+        check_topology(closed, {k + 1LL, 2LL * k - 2, 2, 0, 0}, what + " capped");
+        EXPECT_GT(signed_volume6(closed), 0);
+        const auto val = valences(closed);
+        EXPECT_EQ(val[0], k);
+        // Halving keeps the ring's valences logarithmic: at most 2 new edges per level.
+        const size_t max_ring = *std::max_element(val.begin() + 1, val.end());
+        EXPECT_LE(static_cast<double>(max_ring), 4 + 2 * std::ceil(std::log2(static_cast<double>(k)))) << what;
+    }
+}
+
+TEST(AwkwardGenerators, MakeAwkwardHitsTheRequestedSize) {
+    for (AwkwardFamily fam : kAwkwardFamilies) {
+        for (uint32_t target : {0u, 1u, 50u, 700u}) {
+            const WalledMesh m = make_awkward(fam, target);
+            const std::string what = std::string(awkward_family_name(fam)) + " " + std::to_string(target);
+            const Topology t = analyze(m.soup);
+            EXPECT_EQ(t.problem, "") << what;
+            EXPECT_FALSE(t.unreferenced) << what;
+            check_walls(m.soup, m.walls, what);
+        }
+        for (uint32_t target : {10000u, 31234u}) {
+            const WalledMesh m = make_awkward(fam, target);
+            const std::string what = std::string(awkward_family_name(fam)) + " " + std::to_string(target);
+            const double ratio = static_cast<double>(m.soup.triangles.size()) / target;
+            EXPECT_GT(ratio, 0.9) << what;
+            EXPECT_LT(ratio, 1.1) << what;
+            const Topology t = analyze(m.soup);
+            EXPECT_EQ(t.problem, "") << what;
+            EXPECT_NO_THROW(Mesh::from_soup(m.soup).validate()) << what;
+            const bool walled = fam == AwkwardFamily::SlitWalls || fam == AwkwardFamily::SerpentineWalls;
+            EXPECT_EQ(m.walls.empty(), !walled) << what;
+            check_walls(m.soup, m.walls, what);
+        }
+    }
+    EXPECT_STREQ(awkward_family_name(AwkwardFamily::SerpentineWalls), "serpentine_walls");
+}
+
+TEST(AwkwardGenerators, BadParametersThrow) {
+    EXPECT_THROW(make_hole_corridors(2, 0), RequestError);
+    EXPECT_THROW(make_slit_corridors(2, 1), RequestError);
+    EXPECT_THROW(make_slit_walls(2, 0), RequestError);
+    EXPECT_THROW(make_serpentine_walls(2, 1), RequestError);
+    EXPECT_THROW(make_disk_many_holes(0, 3), RequestError);
+    EXPECT_THROW(make_eared_grid(3, 0), RequestError);
+    EXPECT_THROW(make_cone(2, true), RequestError);
+}
+
+TEST(Generators, ShufflesKeepTheSurface) {
+    for (uint64_t seed = 1; seed <= 20; ++seed) {
+        TriangleSoup s = make_genus_with_holes(2, 3, 2);
+        const Topology before = analyze(s);
+        const TriangleSoup original = s;
+        const std::vector<uint32_t> perm = shuffle_vertices(s, seed);
+        shuffle_faces(s, seed + 100);
+        check_topology(s, {before.V, before.F, before.chi, before.loops, before.genus}, "shuffled " + std::to_string(seed));
+        EXPECT_GT(signed_volume6(s), 0);  // orientation kept
+        std::vector<uint32_t> sorted = perm;
+        std::sort(sorted.begin(), sorted.end());
+        for (uint32_t v = 0; v < sorted.size(); ++v) ASSERT_EQ(sorted[v], v);
+        for (uint32_t v = 0; v < perm.size(); ++v) EXPECT_EQ(s.points[perm[v]], original.points[v]);
+        // The same faces, renamed: every original face is there as a rotation of itself.
+        std::set<Triangle> faces;
+        for (Triangle t : s.triangles) {
+            std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+            faces.insert(t);
+        }
+        for (Triangle t : original.triangles) {
+            for (uint32_t& v : t) v = perm[v];
+            std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+            EXPECT_TRUE(faces.count(t));
+        }
+        TriangleSoup again = original;
+        shuffle_vertices(again, seed);
+        shuffle_faces(again, seed + 100);
+        EXPECT_EQ(again.triangles, s.triangles) << "deterministic for a seed";
+    }
 }

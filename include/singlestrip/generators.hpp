@@ -12,6 +12,8 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <utility>
+#include <vector>
 
 #include "singlestrip/soup.hpp"
 
@@ -80,6 +82,105 @@ TriangleSoup make_moebius_soup(uint32_t n);
 /// The demo model: a gently waved genus-2 plate, make_genus_surface(2, 8) displaced
 /// (V=1854, F=3712, chi=-2, b=0, g=2).
 TriangleSoup make_builtin_model();
+
+// ---- Awkward families (issue 15): inputs on which strips are costly. Each scales from a few
+// dozen to millions of triangles with its size parameters; make_awkward() picks them for a
+// requested triangle count.
+
+/// Constraint walls as vertex polylines along mesh edges (v0 v1 v2 ... = edges v0-v1, v1-v2, ...),
+/// the shape of a constraints file.
+using Polylines = std::vector<std::vector<uint32_t>>;
+
+/// The edges of `lines` as vertex pairs, in order (StripOptions::constraint_edges). O(total length).
+std::vector<std::pair<uint32_t, uint32_t>> polyline_edges(const Polylines& lines);
+
+/// A mesh with constraint walls that leave its faces edge-connected (walls may be empty).
+struct WalledMesh {
+    TriangleSoup soup;
+    Polylines walls;
+};
+
+/// Corridors one quad wide between parallel holes: a grid of nx = length+2 by ny = 2 holes + 1
+/// unit cells; cell row 2i+1 (i < holes) is a hole over columns 1..length, so rows 0, 2, 4, ...
+/// are corridors joined by the end columns. \pre length >= 1.
+/// V=(nx+1)(ny+1), F=2(nx ny - holes length), chi=1-holes, b=holes+1, g=0.
+TriangleSoup make_hole_corridors(uint32_t holes, uint32_t length);
+
+/// Corridors one quad wide between parallel slits (cuts): a grid of nx = length+2 by
+/// ny = slits+1 unit cells cut along the lines y = 1..slits from x = 1 to x = length+1. The
+/// slit's inner vertices are duplicated (same coordinates; the copy, numbered after the grid's
+/// vertices, is used by the cells above), so each cut edge is boundary on both sides; the slit's
+/// end vertices stay shared. \pre length >= 2 (a one-edge cut cannot be made by duplicating vertices).
+/// V=(nx+1)(ny+1) + slits(length-1), F=2 nx ny, chi=1-slits, b=slits+1, g=0.
+TriangleSoup make_slit_corridors(uint32_t slits, uint32_t length);
+
+/// The same corridors with walls instead of cuts: make_grid_disk(length+2, slits+1) and one wall
+/// per line y = 1..slits from x = 1 to x = length+1 (length edges, touching no boundary).
+/// \pre length >= 1. V=(nx+1)(ny+1), F=2 nx ny, chi=1, b=1, g=0.
+WalledMesh make_slit_walls(uint32_t slits, uint32_t length);
+
+/// Serpentine walls two rows apart: make_grid_disk(length, 2(walls+1)); wall k = 1..walls runs
+/// along y = 2k from the left border to x = length-1 (k odd) or from x = 1 to the right border
+/// (k even), leaving a one-cell gap at the other end, so the corridors form one winding path.
+/// \pre length >= 2. V=(length+1)(2 walls+3), F=4 length (walls+1), chi=1, b=1, g=0.
+WalledMesh make_serpentine_walls(uint32_t walls, uint32_t length);
+
+/// A disk with one small hole every ~200 triangles: a grid of nx = 10 bx by ny = 10 by unit cells,
+/// one hole per 10 x 10 block (a, b), around its cell (x, y) = (10a+5, 10b+5), of kind a mod 3:
+/// 0 = one triangle removed, 1 = the cell's two triangles removed, 2 = the 2 x 2 cells around
+/// vertex (x, y) removed (8 triangles) and that vertex dropped. Holes share no vertex with each
+/// other or the border. \pre bx, by >= 1. With h_k the holes of kind k and h = bx by:
+/// V=(nx+1)(ny+1) - h_2, F=2 nx ny - h_0 - 2h_1 - 8h_2, chi=1-h, b=1+h, g=0.
+TriangleSoup make_disk_many_holes(uint32_t bx, uint32_t by);
+
+/// Ears next to faces with two passable edges: make_grid_disk(nx, ny) with a two-triangle spike
+/// on every bottom and top border edge. A spike is a face T on the border edge (two passable
+/// edges: to the grid and to the ear) and an ear E on T's edge at the edge's left end (one
+/// passable edge). Planar and CCW. \pre nx, ny >= 1.
+/// V=(nx+1)(ny+1) + 4nx, F=2 nx ny + 4nx, chi=1, b=1, g=0.
+TriangleSoup make_eared_grid(uint32_t nx, uint32_t ny);
+
+/// A cone whose apex (vertex 0, at z=1) has valence k: k side triangles to a ring of k vertices
+/// (1..k, unit circle, z=0). Open (capped=false): the ring is the boundary, the apex interior;
+/// V=k+1, F=k, chi=1, b=1. Capped: the base polygon is triangulated by repeated halving (every
+/// other ring vertex kept per level, so ring valences stay O(log k)); outward normals;
+/// V=k+1, F=2k-2, chi=2, b=0. g=0. \pre k >= 3.
+TriangleSoup make_cone(uint32_t k, bool capped);
+
+enum class AwkwardFamily : uint8_t {
+    HoleCorridors,    ///< make_hole_corridors
+    SlitCorridors,    ///< make_slit_corridors
+    SlitWalls,        ///< make_slit_walls
+    SerpentineWalls,  ///< make_serpentine_walls
+    ManyHoles,        ///< make_disk_many_holes
+    Ears,             ///< make_eared_grid(nx, 4)
+    OpenCone,         ///< make_cone(k, false)
+    ClosedCone,       ///< make_cone(k, true)
+};
+inline constexpr AwkwardFamily kAwkwardFamilies[] = {AwkwardFamily::HoleCorridors,   AwkwardFamily::SlitCorridors, AwkwardFamily::SlitWalls,
+                                                     AwkwardFamily::SerpentineWalls, AwkwardFamily::ManyHoles,     AwkwardFamily::Ears,
+                                                     AwkwardFamily::OpenCone,        AwkwardFamily::ClosedCone};
+
+/// "hole_corridors", "slit_corridors", "slit_walls", "serpentine_walls", "many_holes", "ears",
+/// "open_cone", "closed_cone".
+const char* awkward_family_name(AwkwardFamily family) noexcept;
+
+/// The family at about `triangles` faces (grids kept roughly square, except the eared grid,
+/// 4 rows tall so a third of its faces are spike faces). The count is within 10% of the request
+/// for requests >= 10000; small requests give a small member of the family. Walls are empty
+/// for families without them.
+WalledMesh make_awkward(AwkwardFamily family, uint32_t triangles);
+
+// ---- Random relabellings (same surface, different input order).
+
+/// Renumbers the vertices by a random permutation (points moved accordingly); returns the new
+/// index of every old vertex (apply it to constraint polylines, source and target).
+/// Deterministic for a given seed. O(V + F).
+std::vector<uint32_t> shuffle_vertices(TriangleSoup& soup, uint64_t seed);
+
+/// Puts the faces in a random order (source_polygon entries move with their faces) and rotates
+/// each face's corners by a random amount (orientation kept). Deterministic for a given seed. O(F).
+void shuffle_faces(TriangleSoup& soup, uint64_t seed);
 
 /// Performs up to `count` random flips of interior edges; returns the number performed (at
 /// most 10*count+100 candidates are tried). Edge (a,b) between faces (a,b,c) and (b,a,d) becomes
