@@ -63,7 +63,11 @@ struct StripStats {
     long long genus = 0;
     uint32_t boundary_loops = 0;
     StripEngine engine = StripEngine::Matching;  ///< the engine that built the strip
-    uint32_t loops = 0;  ///< matching engine: loops and paths of the 2-factor before joining
+    uint32_t loops = 0;      ///< matching engine: loops and paths before joining
+    uint32_t unmatched = 0;  ///< matching engine: faces left short by the matching (path ends)
+    /// Matching engine: its loops and paths could not be joined into one strip, so the growth
+    /// builder finished the (partly split) mesh.
+    bool growth_fallback = false;
 };
 
 struct StripResult {
