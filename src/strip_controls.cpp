@@ -80,8 +80,7 @@ void check_strip_request(const Mesh& mesh, const StripOptions& opt) {
     const uint32_t nf = mesh.num_faces();
     if (nf == 0) throw InputError("mesh has no faces");
     if (opt.seed_face && *opt.seed_face >= nf)
-        throw RequestError("seed face " + std::to_string(*opt.seed_face) + " is out of range (mesh has " + std::to_string(nf) +
-                           " faces)");
+        throw RequestError("seed face " + std::to_string(*opt.seed_face) + " is out of range (mesh has " + std::to_string(nf) + " faces)");
     if (opt.source) check_vertex(mesh, "source", *opt.source);
     if (opt.target) check_vertex(mesh, "target", *opt.target);
     if (opt.seed_face && opt.source && !face_has_vertex(mesh, *opt.seed_face, *opt.source))
@@ -93,8 +92,10 @@ uint32_t find_halfedge(const Mesh& mesh, uint32_t u, uint32_t v) {
     if (u >= mesh.num_vertices() || v >= mesh.num_vertices()) return kNone;
     uint32_t found = kNone;
     for_each_outgoing(mesh, u, [&](uint32_t h) {
-        if (mesh.to(h) == v) found = h;
-        else if (mesh.from(Mesh::prev(h)) == v) found = Mesh::prev(h);
+        if (mesh.to(h) == v)
+            found = h;
+        else if (mesh.from(Mesh::prev(h)) == v)
+            found = Mesh::prev(h);
         return found != kNone;
     });
     return found;
@@ -115,9 +116,8 @@ std::vector<uint8_t> constraint_halfedges(const Mesh& mesh, const StripOptions& 
     if (opt.constraint_edges.empty()) return blocked;
     const std::vector<uint32_t> sizes = pieces(mesh, blocked);
     if (sizes.size() > 1)
-        throw RequestError("the constraint edges cut the surface into " + std::to_string(sizes.size()) +
-                           " pieces (faces per piece: " + piece_sizes(sizes) +
-                           "); one strip cannot cover them without crossing a constraint");
+        throw RequestError("the constraint edges cut the surface into " + std::to_string(sizes.size()) + " pieces (faces per piece: " +
+                           piece_sizes(sizes) + "); one strip cannot cover them without crossing a constraint");
     return blocked;
 }
 

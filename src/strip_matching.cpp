@@ -6,6 +6,9 @@
 // with the neighbour's), so the crossed (*used*) edges form loops and paths; loops are joined by one
 // midpoint split each, path ends for free where they touch. Design, the argument that it ends in
 // one strip, and what it costs: docs/algorithm.md, "The matching engine".
+#include <boost/graph/adjacency_list.hpp>
+#include <boost/graph/max_cardinality_matching.hpp>
+
 #include <algorithm>
 #include <cstdint>
 #include <string>
@@ -35,13 +38,13 @@ private:
     std::vector<uint8_t> matched_;  ///< passable edge not crossed, paired by the matching
     std::vector<uint8_t> used_;     ///< crossed by the strip (an edge of the loops and paths)
     // Per face.
-    std::vector<uint8_t> vlink_;   ///< linked to the virtual face (a pinned end)
-    std::vector<uint8_t> quota_;   ///< matched edges still wanted
-    std::vector<uint32_t> sid_;    ///< structure (loop or path) id, through uf_
+    std::vector<uint8_t> vlink_;  ///< linked to the virtual face (a pinned end)
+    std::vector<uint8_t> quota_;  ///< matched edges still wanted
+    std::vector<uint32_t> sid_;   ///< structure (loop or path) id, through uf_
     // Per structure id.
-    std::vector<uint32_t> uf_;     ///< union-find parent
-    std::vector<uint8_t> cycle_;   ///< at a root: the structure is a loop (no free end)
-    std::vector<uint8_t> pinned_;  ///< at a root: holds the virtual face
+    std::vector<uint32_t> uf_;           ///< union-find parent
+    std::vector<uint8_t> cycle_;         ///< at a root: the structure is a loop (no free end)
+    std::vector<uint8_t> pinned_;        ///< at a root: holds the virtual face
     uint32_t pins_[2] = {kNone, kNone};  ///< source face (or seed) and target face
     uint32_t num_pins_ = 0;
     StripStats stats_;
@@ -49,9 +52,7 @@ private:
     std::vector<uint32_t> aug_prev_, aug_matched_, aug_unmatched_, aug_queue_;
 
     [[nodiscard]] bool passable(uint32_t h) const { return !mesh_.is_boundary(h) && !blocked_[h]; }
-    [[nodiscard]] uint32_t degree(uint32_t f) const {
-        return passable(3 * f) + passable(3 * f + 1) + passable(3 * f + 2);
-    }
+    [[nodiscard]] uint32_t degree(uint32_t f) const { return passable(3 * f) + passable(3 * f + 1) + passable(3 * f + 2); }
     /// Links of f in the loops-and-paths graph, the virtual face included.
     [[nodiscard]] uint32_t hdeg(uint32_t f) const { return used_[3 * f] + used_[3 * f + 1] + used_[3 * f + 2] + vlink_[f]; }
     void set_pair(std::vector<uint8_t>& a, uint32_t h, uint8_t value) {
@@ -70,6 +71,7 @@ private:
     void match_patterned();
     bool augment_from(uint32_t u, std::vector<uint32_t>& stamp, uint32_t mark, size_t budget);
     void settle_leftovers();
+    bool repair_in_balls(std::vector<uint32_t>& short_faces, size_t ball);
     void label_structures();
     void merge_all();
     bool try_merge(uint32_t h, bool allow_split);
@@ -86,8 +88,10 @@ private:
 void MatchingBuilder::choose_pins() {
     const uint32_t nf = mesh_.num_faces();
     uint32_t first = kNone, last = kNone;
-    if (opt_.seed_face) first = *opt_.seed_face;
-    else if (opt_.source) first = face_at_vertex(mesh_, blocked_, *opt_.source, kNone);
+    if (opt_.seed_face)
+        first = *opt_.seed_face;
+    else if (opt_.source)
+        first = face_at_vertex(mesh_, blocked_, *opt_.source, kNone);
     if (opt_.target && nf > 1) {
         last = face_at_vertex(mesh_, blocked_, *opt_.target, first);
         if (last == first) {
@@ -129,21 +133,24 @@ SplitResult MatchingBuilder::split(uint32_t h) {
     for (uint32_t i = 0; i < num_pins_; ++i) {
         const uint32_t v = (i == 0 && (opt_.seed_face || opt_.source)) ? pin_vertex[0] : pin_vertex[1];
         if (v == kNone) continue;
-        if (pins_[i] == sr.f_a && !face_has_vertex(mesh_, sr.f_a, v)) pins_[i] = sr.f_b;
-        else if (pins_[i] == sr.g_b && !face_has_vertex(mesh_, sr.g_b, v)) pins_[i] = sr.g_a;
+        if (pins_[i] == sr.f_a && !face_has_vertex(mesh_, sr.f_a, v))
+            pins_[i] = sr.f_b;
+        else if (pins_[i] == sr.g_b && !face_has_vertex(mesh_, sr.g_b, v))
+            pins_[i] = sr.g_a;
     }
     return sr;
 }
 
-// A face with one passable edge (an ear) can only end a strip. Unless it is a pinned face, or
-// there are at most two ears and no pins, it is split with its neighbour g: the ear's children
+// A face with one passable edge (an ear) can only end a strip. Unless it is a pinned face, it is
+// split with its neighbour g (+2 faces, even for the two ears a strip could end in: an end that
+// is not where the loops close blocks joins). The ear's children
 // and g's form a ring of four faces entered and left through g's other two edges, so g's
 // children are matched to each other (when g had three passable edges).
 void MatchingBuilder::split_ears() {
     std::vector<uint32_t> ears;
     for (uint32_t f = 0; f < mesh_.num_faces(); ++f)
         if (degree(f) == 1) ears.push_back(f);
-    if (ears.empty() || (num_pins_ == 0 && ears.size() <= 2)) return;
+    if (mesh_.num_faces() <= 2) return;
     for (uint32_t f : ears) {
         if (f == pins_[0] || f == pins_[1] || degree(f) != 1) continue;
         uint32_t h = 3 * f;
@@ -207,8 +214,10 @@ void MatchingBuilder::match_patterned() {
                 seen[g] = 1;
                 queue.push_back(g);
                 const uint32_t t = mesh_.twin(h);
-                if (m == Mesh::prev(h)) pref[g] = Mesh::prev(t);       // m touches from(h): g's should touch to(h)
-                else if (m == Mesh::next(h)) pref[g] = Mesh::next(t);  // and the other way round
+                if (m == Mesh::prev(h))
+                    pref[g] = Mesh::prev(t);  // m touches from(h): g's should touch to(h)
+                else if (m == Mesh::next(h))
+                    pref[g] = Mesh::next(t);  // and the other way round
             }
         }
     }
@@ -255,6 +264,79 @@ bool MatchingBuilder::augment_from(uint32_t u, std::vector<uint32_t>& stamp, uin
     return false;
 }
 
+/// Initial matching for boost::matching(): the one already in the mate map.
+template <typename Graph, typename MateMap>
+struct keep_matching {
+    static void find_matching(const Graph&, MateMap) {}
+};
+
+// Maximum matching (Edmonds' blossoms, Boost.Graph) on the faces within `ball` faces of each
+// short face, starting from the current matching; faces matched across the ball's rim stay as
+// they are. Where a perfect matching exists (closed surfaces) this finds the alternating paths
+// through odd cycles that the plain search misses. True if some face was repaired.
+bool MatchingBuilder::repair_in_balls(std::vector<uint32_t>& short_faces, size_t ball) {
+    const uint32_t nf = mesh_.num_faces();
+    std::vector<uint32_t> local(nf, kNone), faces, queue;
+    auto want_one = [&](uint32_t f) { return static_cast<int>(degree(f)) - (2 - vlink_[f]) == 1; };
+    for (uint32_t s : short_faces) {
+        if (local[s] != kNone) continue;
+        queue.assign(1, s);
+        local[s] = 0;
+        for (size_t head = 0; head < queue.size() && queue.size() < ball; ++head)
+            for (uint32_t h = 3 * queue[head]; h < 3 * queue[head] + 3; ++h) {
+                if (!passable(h)) continue;
+                const uint32_t g = mesh_.neighbor(h);
+                if (local[g] == kNone) local[g] = 0, queue.push_back(g);
+            }
+        faces.insert(faces.end(), queue.begin(), queue.end());
+    }
+    // Keep faces that take exactly one matched edge and whose partner is inside too.
+    std::vector<uint32_t> kept;
+    for (uint32_t f : faces)
+        if (want_one(f))
+            local[f] = 1;
+        else
+            local[f] = kNone;
+    for (uint32_t f : faces) {
+        if (local[f] == kNone) continue;
+        bool inside = true;
+        for (uint32_t h = 3 * f; h < 3 * f + 3; ++h)
+            if (matched_[h] && local[mesh_.neighbor(h)] == kNone) inside = false;
+        if (inside) kept.push_back(f);
+    }
+    for (uint32_t f : faces) local[f] = kNone;
+    for (uint32_t i = 0; i < kept.size(); ++i) local[kept[i]] = i;
+    using Graph = boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS>;
+    using Vertex = boost::graph_traits<Graph>::vertex_descriptor;
+    Graph graph(kept.size());
+    std::vector<Vertex> mate(kept.size(), boost::graph_traits<Graph>::null_vertex());
+    for (uint32_t i = 0; i < kept.size(); ++i)
+        for (uint32_t h = 3 * kept[i]; h < 3 * kept[i] + 3; ++h) {
+            if (!passable(h)) continue;
+            const uint32_t j = local[mesh_.neighbor(h)];
+            if (j == kNone || j <= i) continue;
+            boost::add_edge(i, j, graph);
+            if (matched_[h]) mate[i] = j, mate[j] = i;
+        }
+    boost::matching<Graph, Vertex*, boost::property_map<Graph, boost::vertex_index_t>::type, boost::edmonds_augmenting_path_finder,
+                    keep_matching, boost::no_matching_verifier>(graph, mate.data(), boost::get(boost::vertex_index, graph));
+    for (uint32_t f : kept)
+        for (uint32_t h = 3 * f; h < 3 * f + 3; ++h) matched_[h] = 0;
+    for (uint32_t i = 0; i < kept.size(); ++i) {
+        quota_[kept[i]] = mate[i] == boost::graph_traits<Graph>::null_vertex();
+        if (quota_[kept[i]] || mate[i] < i) continue;
+        for (uint32_t h = 3 * kept[i]; h < 3 * kept[i] + 3; ++h)
+            if (passable(h) && local[mesh_.neighbor(h)] == mate[i]) {
+                set_pair(matched_, h, 1);
+                break;
+            }
+    }
+    for (uint32_t f : kept) local[f] = kNone;
+    const size_t before = short_faces.size();
+    std::erase_if(short_faces, [&](uint32_t f) { return quota_[f] == 0; });
+    return short_faces.size() < before;
+}
+
 // Faces the matching left short: local augmenting searches with a growing budget; what is still
 // short drops crossed edges instead (each drop leaves a path end).
 void MatchingBuilder::settle_leftovers() {
@@ -268,9 +350,12 @@ void MatchingBuilder::settle_leftovers() {
     uint32_t mark = 0;
     for (size_t budget : {size_t{64}, size_t{1024}, size_t{16384}}) {
         for (uint32_t f : short_faces)
-            while (quota_[f] > 0 && augment_from(f, stamp, ++mark, budget)) {}
+            while (quota_[f] > 0 && augment_from(f, stamp, ++mark, budget)) {
+            }
         std::erase_if(short_faces, [&](uint32_t f) { return quota_[f] == 0; });
     }
+    for (size_t ball : {size_t{512}, size_t{8192}, size_t{131072}})
+        if (!short_faces.empty()) repair_in_balls(short_faces, ball);
     for (uint32_t h = 0; h < 3 * nf; ++h) used_[h] = passable(h) && !matched_[h];
     for (uint32_t f : short_faces)
         for (uint32_t k = 0; k < 3 && quota_[f] > 0; ++k)
@@ -419,7 +504,8 @@ std::vector<uint32_t> MatchingBuilder::walk() const {
 
 StripResult MatchingBuilder::finish(std::vector<uint32_t> order) {
     const uint32_t nf = mesh_.num_faces();
-    if (order.size() != nf) throw InternalError("matching engine: strip covers " + std::to_string(order.size()) + " of " + std::to_string(nf) + " faces");
+    if (order.size() != nf)
+        throw InternalError("matching engine: strip covers " + std::to_string(order.size()) + " of " + std::to_string(nf) + " faces");
     if (num_pins_ == 2 && order.back() != pins_[1]) throw InternalError("matching engine: strip does not end at the target face");
     stats_.swaps = count_swaps(mesh_, order);
     stats_.output_triangles = nf;
