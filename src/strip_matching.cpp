@@ -74,6 +74,8 @@ private:
     bool repair_in_balls(std::vector<uint32_t>& short_faces, size_t ball);
     void label_structures();
     void merge_all();
+    void reduce_loops();
+    bool flip_ring(uint32_t v, std::vector<uint32_t>& ring);
     bool try_merge(uint32_t h, bool allow_split);
     void join(uint32_t h, uint32_t a, uint32_t b, bool cycle, bool pinned);
     void rotate_into(uint32_t h, uint32_t a, uint32_t b);
@@ -404,6 +406,50 @@ void MatchingBuilder::label_structures() {
     stats_.loops = static_cast<uint32_t>(uf_.size());
 }
 
+// The faces around interior vertex v, as the half-edges leaving v (one per face, in turn);
+// across prev(ring[i]) lies the next face. The ring is alternating when those edges are crossed
+// and matched in turn. If each crossed edge lies in a different loop, swapping crossed and matched
+// edges joins all those loops into one for free (each face keeps one matched edge).
+bool MatchingBuilder::flip_ring(uint32_t v, std::vector<uint32_t>& ring) {
+    constexpr uint32_t kMaxRing = 12;
+    ring.clear();
+    const uint32_t h0 = mesh_.vertex_halfedge(v);
+    if (h0 == kNone) return false;
+    const uint8_t first = used_[Mesh::prev(h0)];
+    for (uint32_t h = h0;;) {
+        const uint32_t e = Mesh::prev(h);
+        if (!passable(e) || vlink_[Mesh::face(h)] || ring.size() == kMaxRing) return false;
+        if (used_[e] != (first ^ (ring.size() % 2)) || used_[e] == matched_[e]) return false;
+        ring.push_back(h);
+        h = mesh_.twin(e);
+        if (h == h0) break;
+    }
+    if (ring.size() % 2 != 0) return false;
+    std::vector<uint32_t> roots;
+    for (size_t i = first ? 0 : 1; i < ring.size(); i += 2) {
+        const uint32_t r = find(sid_[Mesh::face(ring[i])]);
+        if (!cycle_[r] || pinned_[r] || std::find(roots.begin(), roots.end(), r) != roots.end()) return false;
+        roots.push_back(r);
+    }
+    for (uint32_t h : ring) {
+        const uint32_t e = Mesh::prev(h);
+        set_pair(used_, e, !used_[e]);
+        set_pair(matched_, e, !matched_[e]);
+    }
+    for (size_t i = 1; i < roots.size(); ++i) uf_[roots[i]] = roots[0];
+    return true;
+}
+
+// Fewer loops before any split: flip alternating vertex rings that join loops.
+void MatchingBuilder::reduce_loops() {
+    std::vector<uint32_t> ring;
+    for (uint32_t pass = 0, flips = 1; pass < 4 && flips > 0; ++pass) {  // a flip can enable another
+        flips = 0;
+        for (uint32_t v = 0; v < mesh_.num_vertices(); ++v) flips += flip_ring(v, ring);
+        stats_.ring_flips += flips;
+    }
+}
+
 // Joins along the passable edge h (not crossed): a and b are the roots of its two faces.
 void MatchingBuilder::join(uint32_t h, uint32_t a, uint32_t b, bool cycle, bool pinned) {
     set_pair(used_, h, 1);
@@ -553,6 +599,7 @@ StripResult MatchingBuilder::run() {
     match_patterned();
     settle_leftovers();
     label_structures();
+    reduce_loops();
     merge_all();
     if (opt_.validate_each_split) mesh_.validate();
     if (!single_strip_ready()) return fallback();
