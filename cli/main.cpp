@@ -49,13 +49,11 @@ private:
     std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 
-/// `--input-format`: the format of INPUT when its name does not tell (e.g. /dev/stdin).
-std::string g_input_format;
-
 /// Reads INPUT: a mesh file, or `builtin:genus2` (the demo model of generators.hpp).
-ss::TriangleSoup load_input(const std::string& input) {
+/// `format` is `--input-format`: INPUT's format when its name does not tell (e.g. /dev/stdin).
+ss::TriangleSoup load_input(const std::string& input, const std::string& format) {
     ss::ReadOptions read;
-    read.format = g_input_format;
+    read.format = format;
     return ss::read_input(input, read);
 }
 
@@ -134,8 +132,8 @@ std::string info_text(const std::string& input, const ss::MeshInfo& m, long long
     return o.str();
 }
 
-int run_info(const std::string& input, bool as_json, bool orient) {
-    ss::TriangleSoup soup = load_input(input);
+int run_info(const std::string& input, const std::string& format, bool as_json, bool orient) {
+    ss::TriangleSoup soup = load_input(input, format);
     long long flipped = -1;
     if (orient) flipped = ss::orient_soup(soup);  // -1: not orientable, reported as a problem
     const ss::MeshInfo m = ss::mesh_info(soup);
@@ -151,6 +149,7 @@ struct StripArgs {
     std::string input, output;
     std::optional<std::string> indices, report, constraints, cycles, cycles_obj, out_dir;
     std::string format = "ply";
+    std::string input_format;  ///< `--input-format`
     unsigned jobs = 0;
     bool with_indices = false, with_cycles = false;
     std::optional<uint32_t> seed_face, source, target;
@@ -228,7 +227,7 @@ int run_strip(const StripArgs& a) {
     // Unknown extension: RequestError before any work.
     if (!ss::is_gltf_path(a.output)) ss::output_format_for(a.output);
     Stopwatch clock;
-    ss::TriangleSoup soup = load_input(a.input);
+    ss::TriangleSoup soup = load_input(a.input, a.input_format);
     const double t_read = clock.lap();
     ss::PipelineResult r = ss::stripify(std::move(soup), pipeline_options(a));
     r.seconds.read = t_read;
@@ -254,40 +253,24 @@ struct VerifyArgs {
     std::string input, output;
     std::optional<std::string> indices, constraints, cycles;
     std::optional<uint32_t> source, target;
+    std::string input_format;  ///< `--input-format`
 };
 
 int run_verify(const VerifyArgs& a) {
-    ss::VerifyReport rep;
     if (ss::is_gltf_path(a.output))
         throw ss::RequestError(a.output +
                                ": verify reads .ply, .obj or .off results (glTF stores float32 positions, "
                                "too coarse for the exact checks); write a .ply with the same options to verify");
-    if (ss::is_builtin_input(a.input)) {
-        // The built-in model has no file: assemble what verify_files() would read.
-        ss::TriangleSoup in = load_input(a.input);
-        ss::OutputMesh out = ss::read_output_mesh(a.output);
-        ss::VerifyInput vi;
-        vi.in_points = std::move(in.points);
-        vi.in_faces = std::move(in.triangles);
-        vi.out_points = std::move(out.points);
-        vi.out_faces = std::move(out.faces);
-        vi.out_parent = std::move(out.parent);
-        if (a.indices) vi.indices = ss::read_index_file(*a.indices);
-        if (a.constraints) vi.constraints = ss::read_constraints(*a.constraints, static_cast<uint32_t>(vi.in_points.size()));
-        vi.source = a.source;
-        vi.target = a.target;
-        if (a.cycles) vi.cycles = ss::read_cycles_file(*a.cycles);
-        rep = ss::verify(vi);
-    } else {
-        ss::VerifyFileOptions o;
-        o.indices_path = a.indices;
-        o.constraints_path = a.constraints;
-        o.source = a.source;
-        o.target = a.target;
-        o.cycles_path = a.cycles;
-        o.input_format = g_input_format;
-        rep = ss::verify_files(a.input, a.output, o);
-    }
+    ss::VerifyFileOptions o;
+    o.indices_path = a.indices;
+    o.constraints_path = a.constraints;
+    o.source = a.source;
+    o.target = a.target;
+    o.cycles_path = a.cycles;
+    o.input_format = a.input_format;
+    // The built-in model has no file: it is generated and checked like a read input.
+    const ss::VerifyReport rep = ss::is_builtin_input(a.input) ? ss::verify_files(load_input(a.input, a.input_format), a.output, o)
+                                                               : ss::verify_files(a.input, a.output, o);
     std::cout << rep.to_string();
     if (!rep.to_string().empty() && rep.to_string().back() != '\n') std::cout << '\n';
     return rep.ok() ? ss::kExitOk : ss::kExitVerifyFailed;
@@ -313,7 +296,8 @@ int main(int argc, char** argv) {
     info->add_flag("--orient", info_orient, "Consistently re-orient an orientable mesh before reporting");
     const char* kInputFormatHelp = "Format of INPUT (obj, off, ply, stl) when its name does not tell, e.g. /dev/stdin";
     const auto input_format_check = CLI::IsMember({"obj", "off", "ply", "stl"}, CLI::ignore_case);
-    info->add_option("--input-format", g_input_format, kInputFormatHelp)->check(input_format_check);
+    std::string info_format;
+    info->add_option("--input-format", info_format, kInputFormatHelp)->check(input_format_check);
 
     StripArgs sa;
     auto* strip = app.add_subcommand("strip", "Turn the mesh into one triangle strip");
@@ -333,7 +317,7 @@ int main(int argc, char** argv) {
         "Strip engine: matching (default) or growth (the paper's builder, for comparison)");
     strip->add_flag("--no-greedy", sa.no_greedy, "Use the paper's plain same-direction turn rule");
     strip->add_flag("--orient", sa.orient, "Consistently re-orient an orientable mesh first");
-    strip->add_option("--input-format", g_input_format, kInputFormatHelp)->check(input_format_check);
+    strip->add_option("--input-format", sa.input_format, kInputFormatHelp)->check(input_format_check);
     strip->add_option("--constraints", sa.constraints, "Edges the strip must not cross: one polyline of vertex indices per line");
     strip->add_option("--source", sa.source, "The strip starts at a face incident to this input vertex");
     strip->add_option("--target", sa.target, "The strip ends at a face incident to this input vertex");
@@ -351,7 +335,7 @@ int main(int argc, char** argv) {
     verify->add_option("--source", va.source, "Required first-face vertex");
     verify->add_option("--target", va.target, "Required last-face vertex");
     verify->add_option("--cycles", va.cycles, "Cycles JSON to check for independence");
-    verify->add_option("--input-format", g_input_format, kInputFormatHelp)->check(input_format_check);
+    verify->add_option("--input-format", va.input_format, kInputFormatHelp)->check(input_format_check);
 
 #ifdef SINGLESTRIP_HAVE_RENDER
     ss::render::RenderArgs ra;
@@ -387,7 +371,7 @@ int main(int argc, char** argv) {
     }
 
     try {
-        if (info->parsed()) return run_info(info_input, info_json_flag, info_orient);
+        if (info->parsed()) return run_info(info_input, info_format, info_json_flag, info_orient);
         if (strip->parsed()) {
             if (sa.out_dir) {
                 if (!sa.output.empty() || sa.constraints || sa.source || sa.target || sa.report || sa.indices || sa.cycles ||
@@ -399,7 +383,7 @@ int main(int argc, char** argv) {
                 ss::BatchOptions b;
                 b.out_dir = *sa.out_dir;
                 b.format = sa.format;
-                b.input_format = g_input_format;
+                b.input_format = sa.input_format;
                 b.write_indices = sa.with_indices;
                 b.cycles = sa.with_cycles;
                 b.greedy = !sa.no_greedy;
