@@ -187,8 +187,37 @@ void MatchingBuilder::set_quotas() {
 // alternate and the GL strip needs no swap there.
 void MatchingBuilder::match_patterned() {
     const uint32_t nf = mesh_.num_faces();
-    std::vector<uint32_t> pref(nf, kNone), queue;
+    std::vector<uint32_t> pref(nf, kNone), queue, critical;
     std::vector<uint8_t> seen(nf, 0);
+    // Karp-Sipser: a face left with one free neighbour takes it at once, before the pattern
+    // asks, so few faces are left short (each costs an augmenting path, which breaks the pattern).
+    std::vector<uint8_t> free_n(nf, 0);
+    auto wants = [&](uint32_t h) { return passable(h) && !matched_[h] && quota_[mesh_.neighbor(h)] > 0; };
+    for (uint32_t f = 0; f < nf; ++f)
+        if (quota_[f] > 0)
+            for (uint32_t h = 3 * f; h < 3 * f + 3; ++h) free_n[f] += wants(h);
+    for (uint32_t f = 0; f < nf; ++f)
+        if (quota_[f] > 0 && free_n[f] == 1) critical.push_back(f);
+    auto match = [&](uint32_t h) {
+        set_pair(matched_, h, 1);
+        for (uint32_t x : {Mesh::face(h), mesh_.neighbor(h)}) {
+            if (--quota_[x] > 0) continue;
+            for (uint32_t e = 3 * x; e < 3 * x + 3; ++e) {
+                if (!passable(e)) continue;
+                const uint32_t y = mesh_.neighbor(e);
+                if (quota_[y] > 0 && free_n[y] > 0 && --free_n[y] == 1) critical.push_back(y);
+            }
+        }
+    };
+    auto drain = [&] {
+        while (!critical.empty()) {
+            const uint32_t x = critical.back();
+            critical.pop_back();
+            for (uint32_t e = 3 * x; e < 3 * x + 3 && quota_[x] > 0; ++e)
+                if (wants(e)) match(e);
+        }
+    };
+    drain();
     queue.reserve(nf);
     for (uint32_t s = 0; s < nf; ++s) {
         if (seen[s]) continue;
@@ -198,12 +227,7 @@ void MatchingBuilder::match_patterned() {
             const uint32_t f = queue[head];
             for (uint32_t i = 0; i < 3 && quota_[f] > 0; ++i) {
                 const uint32_t h = i == 0 && pref[f] != kNone ? pref[f] : 3 * f + (i + (pref[f] == kNone ? 0 : pref[f] % 3)) % 3;
-                if (!passable(h) || matched_[h]) continue;
-                const uint32_t g = mesh_.neighbor(h);
-                if (quota_[g] == 0) continue;
-                set_pair(matched_, h, 1);
-                --quota_[f];
-                --quota_[g];
+                if (wants(h)) match(h), drain();
             }
             uint32_t m = kNone;  // the edge this face does not cross
             for (uint32_t k = 0; k < 3; ++k)
