@@ -82,6 +82,7 @@ private:
     void merge_all();
     void reduce_loops();
     bool flip_alternating(uint32_t f1);
+    bool meets_first(uint32_t from, uint32_t back, uint32_t good, uint32_t bad) const;
     bool try_merge(uint32_t h, bool allow_split);
     void join(uint32_t h, uint32_t a, uint32_t b, bool cycle, bool pinned);
     void rotate_into(uint32_t h, uint32_t a, uint32_t b);
@@ -455,10 +456,29 @@ void MatchingBuilder::label_structures() {
     stats_.loops = static_cast<uint32_t>(uf_.size());
 }
 
-// An alternating cycle: crossed and matched edges in turn, each face on it once. If its crossed
-// edges lie in different loops, swapping crossed and matched edges along it joins all those loops
-// into one for free (each loop opens at its edge; the new edges link the openings in turn) and
-// every face keeps one matched edge. Depth-first from f1 through at most kMaxLoops crossed edges.
+// Walking loop from face `from` away from face `back`: true if `good` comes before `bad`
+// (within a bound; false past it).
+bool MatchingBuilder::meets_first(uint32_t from, uint32_t back, uint32_t good, uint32_t bad) const {
+    uint32_t prev = back, cur = from;
+    for (uint32_t step = 0; step < 256; ++step) {
+        if (cur == good) return true;
+        if (cur == bad) return false;
+        uint32_t next = kNone;
+        for (uint32_t h = 3 * cur; h < 3 * cur + 3; ++h)
+            if (used_[h] && mesh_.neighbor(h) != prev) next = mesh_.neighbor(h);
+        if (next == kNone) return false;
+        prev = cur;
+        cur = next;
+    }
+    return false;
+}
+
+// An alternating cycle: crossed and matched edges in turn, each face on it once. Swapping crossed
+// and matched edges along it keeps one matched edge per face. Each loop it crosses opens at its
+// crossed edge and the new edges link the openings in turn, so loops met once are all joined into
+// one. A loop met twice, at crossed edges p then q (tail t, head h), stays joined only if its arc
+// from h_p away from t_p reaches h_q before t_q (else it splits off again): checked by walking
+// it. Depth-first from f1 through at most kMaxLoops crossed edges, at most one loop met twice.
 bool MatchingBuilder::flip_alternating(uint32_t f1) {
     constexpr uint32_t kMaxLoops = 5;
     if (vlink_[f1]) return false;
@@ -469,14 +489,34 @@ bool MatchingBuilder::flip_alternating(uint32_t f1) {
     const uint32_t close_face = mesh_.neighbor(m1);
     uint32_t path[2 * kMaxLoops];  // crossed edge, then matched edge, in turn
     uint32_t roots[kMaxLoops];
+    uint32_t rep_p = kNone, rep_q = kNone;  // depths of the two crossed edges of a loop met twice
+    auto faces_distinct = [&](uint32_t depth) {
+        uint32_t faces[2 * kMaxLoops];
+        for (uint32_t i = 0; i <= depth; ++i) faces[2 * i] = Mesh::face(path[2 * i]), faces[2 * i + 1] = mesh_.neighbor(path[2 * i]);
+        for (uint32_t i = 0; i < 2 * depth + 2; ++i)
+            for (uint32_t j = 0; j < i; ++j)
+                if (faces[i] == faces[j]) return false;
+        return true;
+    };
+    auto closes_one_loop = [&](uint32_t depth) {
+        if (rep_p == kNone) return true;
+        if (!faces_distinct(depth)) return false;
+        const uint32_t up = path[2 * rep_p], uq = path[2 * rep_q];
+        return meets_first(mesh_.neighbor(up), Mesh::face(up), mesh_.neighbor(uq), Mesh::face(uq));
+    };
     // Returns true once a cycle is flipped. `f` is the face at which a crossed edge is taken.
     auto search = [&](auto&& self, uint32_t f, uint32_t depth) -> bool {
         const uint32_t r = find(sid_[f]);
         if (!cycle_[r] || pinned_[r] || vlink_[f]) return false;
+        bool repeat = false;
         for (uint32_t i = 0; i < depth; ++i)
-            if (roots[i] == r) return false;
+            if (roots[i] == r) {
+                if (rep_p != kNone) return false;
+                rep_p = i, rep_q = depth, repeat = true;
+            }
         roots[depth] = r;
-        for (uint32_t h = 3 * f; h < 3 * f + 3; ++h) {
+        bool found = false;
+        for (uint32_t h = 3 * f; h < 3 * f + 3 && !found; ++h) {
             if (!used_[h]) continue;
             const uint32_t g = mesh_.neighbor(h);
             uint32_t m = kNone;
@@ -485,17 +525,19 @@ bool MatchingBuilder::flip_alternating(uint32_t f1) {
             if (m == kNone || vlink_[g]) continue;
             path[2 * depth] = h;
             path[2 * depth + 1] = m;
-            if (g == close_face && mesh_.twin(m) == m1 && depth > 0) {
+            if (g == close_face && mesh_.twin(m) == m1 && depth > 0 && closes_one_loop(depth)) {
                 for (uint32_t i = 0; i <= 2 * depth + 1; ++i) {
                     set_pair(used_, path[i], !used_[path[i]]);
                     set_pair(matched_, path[i], !matched_[path[i]]);
                 }
-                for (uint32_t i = 1; i <= depth; ++i) uf_[roots[i]] = roots[0];
-                return true;
+                for (uint32_t i = 1; i <= depth; ++i) uf_[find(roots[i])] = find(roots[0]);
+                found = true;
+            } else if (depth + 1 < kMaxLoops && g != close_face) {
+                found = self(self, mesh_.neighbor(m), depth + 1);
             }
-            if (depth + 1 < kMaxLoops && self(self, mesh_.neighbor(m), depth + 1)) return true;
         }
-        return false;
+        if (repeat) rep_p = rep_q = kNone;
+        return found;
     };
     return search(search, f1, 0);
 }
