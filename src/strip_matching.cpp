@@ -71,6 +71,9 @@ private:
     SplitResult split(uint32_t h);
     void split_ears();
     void set_quotas();
+    std::vector<uint32_t> dual_bridges() const;
+    static constexpr uint32_t kMinBridgeSide = 16;
+    void split_bridges();
     void match_patterned();
     bool augment_from(uint32_t u, std::vector<uint32_t>& stamp, uint32_t mark, size_t budget);
     void settle_leftovers();
@@ -171,6 +174,59 @@ void MatchingBuilder::split_ears() {
         const uint32_t inner = tn;  // after the split: g_b's half-edge towards g_a
         const auto has_match = [&](uint32_t x) { return matched_[3 * x] | matched_[3 * x + 1] | matched_[3 * x + 2]; };
         if (degree(sr.g_a) == 3 && degree(sr.g_b) == 3 && !has_match(sr.g_a) && !has_match(sr.g_b)) set_pair(matched_, inner, 1);
+    }
+}
+
+// Passable edges whose removal disconnects the faces (bridges of the dual graph), by an
+// iterative lowpoint search. A strip crosses such an edge exactly once, so the two sides must each
+// be covered by a path ending at it; split, the edge becomes two crossings (the four children
+// form a ring across it), which removes that parity constraint: a serpentine corridor of odd
+// length between walls has no 2-factor until its one-edge gaps are split.
+std::vector<uint32_t> MatchingBuilder::dual_bridges() const {
+    const uint32_t nf = mesh_.num_faces();
+    std::vector<uint32_t> order(nf, kNone), low(nf, 0), parent_edge(nf, kNone), size(nf, 1), bridges;
+    struct Frame {
+        uint32_t f, k;
+    };
+    std::vector<Frame> stack;
+    uint32_t time = 0;
+    for (uint32_t r = 0; r < nf; ++r) {
+        if (order[r] != kNone) continue;
+        order[r] = low[r] = time++;
+        stack.push_back({r, 0});
+        while (!stack.empty()) {
+            Frame& fr = stack.back();
+            if (fr.k < 3) {
+                const uint32_t h = 3 * fr.f + fr.k++;
+                if (!passable(h) || mesh_.twin(h) == parent_edge[fr.f]) continue;
+                const uint32_t g = mesh_.neighbor(h);
+                if (order[g] == kNone) {
+                    order[g] = low[g] = time++;
+                    parent_edge[g] = h;
+                    stack.push_back({g, 0});
+                } else {
+                    low[fr.f] = std::min(low[fr.f], order[g]);
+                }
+                continue;
+            }
+            const uint32_t f = fr.f;
+            stack.pop_back();
+            if (parent_edge[f] == kNone) continue;
+            const uint32_t p = Mesh::face(parent_edge[f]);
+            low[p] = std::min(low[p], low[f]);
+            size[p] += size[f];
+            // A small side (a spike, a pendant ring) is better joined as a loop later.
+            if (low[f] > order[p] && std::min(size[f], nf - size[f]) >= kMinBridgeSide) bridges.push_back(parent_edge[f]);
+        }
+    }
+    return bridges;
+}
+
+void MatchingBuilder::split_bridges() {
+    for (uint32_t h : dual_bridges()) {
+        const uint32_t f = Mesh::face(h), g = mesh_.neighbor(h);
+        if (degree(f) < 2 || degree(g) < 2 || f == pins_[0] || f == pins_[1] || g == pins_[0] || g == pins_[1]) continue;
+        split(h);
     }
 }
 
@@ -704,6 +760,7 @@ StripResult MatchingBuilder::run() {
     quota_.assign(nf, 0);
     choose_pins();
     split_ears();
+    split_bridges();
     set_quotas();
     match_patterned();
     settle_leftovers();
