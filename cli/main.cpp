@@ -9,6 +9,7 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <iostream>
 #include <new>
 #include <optional>
@@ -18,12 +19,11 @@
 
 #include "singlestrip/batch.hpp"
 #include "singlestrip/cycles.hpp"
-#include "singlestrip/gltf.hpp"
-#include "singlestrip/encode.hpp"
 #include "singlestrip/errors.hpp"
-#include "singlestrip/generators.hpp"
+#include "singlestrip/gltf.hpp"
 #include "singlestrip/io.hpp"
-#include "singlestrip/mesh.hpp"
+#include "singlestrip/pipeline.hpp"
+#include "singlestrip/report.hpp"
 #include "singlestrip/strip.hpp"
 #include "singlestrip/validate.hpp"
 #include "singlestrip/verify.hpp"
@@ -35,9 +35,6 @@ namespace ss = singlestrip;
 using json = nlohmann::json;
 
 namespace {
-
-constexpr const char* kBuiltinPrefix = "builtin:";
-constexpr const char* kBuiltinName = "builtin:genus2";
 
 class Stopwatch {
 public:
@@ -52,24 +49,29 @@ private:
     std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 
-bool is_builtin(const std::string& input) { return input.rfind(kBuiltinPrefix, 0) == 0; }
-
-/// `--input-format`: the format of INPUT when its name does not tell (e.g. /dev/stdin).
-std::string g_input_format;
-
 /// Reads INPUT: a mesh file, or `builtin:genus2` (the demo model of generators.hpp).
-ss::TriangleSoup load_input(const std::string& input) {
-    if (is_builtin(input)) {
-        if (input != kBuiltinName)
-            throw ss::RequestError("unknown built-in model '" + input + "' (available: " + kBuiltinName + ")");
-        return ss::make_builtin_model();
-    }
+/// `format` is `--input-format`: INPUT's format when its name does not tell (e.g. /dev/stdin).
+ss::TriangleSoup load_input(const std::string& input, const std::string& format) {
     ss::ReadOptions read;
-    read.format = g_input_format;
-    return ss::read_mesh_file(input, read);
+    read.format = format;
+    return ss::read_input(input, read);
 }
 
-std::string yes_no(bool b) { return b ? "yes" : "no"; }
+/// `--engine`: a CLI11 option whose bad value is a usage error listing the choices.
+CLI::Option* add_engine_option(CLI::App* app, std::function<void(ss::StripEngine)> set, const std::string& help) {
+    auto* opt = app->add_option_function<std::string>(
+        "--engine", [set = std::move(set)](const std::string& name) { set(*ss::parse_engine(name)); }, help);
+    opt->check(CLI::Validator(
+        [](std::string& name) {
+            return ss::parse_engine(name) ? std::string() : "unknown engine '" + name + "' (choices: matching, growth)";
+        },
+        "matching|growth"));
+    return opt;
+}
+
+std::string yes_no(bool b) {
+    return b ? "yes" : "no";
+}
 
 json info_json(const std::string& input, const ss::MeshInfo& m, long long flipped) {
     json j;
@@ -114,7 +116,8 @@ std::string info_text(const std::string& input, const ss::MeshInfo& m, long long
     o << '\n'
       << "boundary loops:       " << m.boundary_loops << '\n'
       << "Euler characteristic: " << m.euler_characteristic << '\n'
-      << "genus:                " << (m.genus_valid ? std::to_string(m.genus) : std::string("n/a (not a manifold orientable surface)")) << '\n'
+      << "genus:                " << (m.genus_valid ? std::to_string(m.genus) : std::string("n/a (not a manifold orientable surface)"))
+      << '\n'
       << "orientable:           " << yes_no(m.orientable) << '\n'
       << "consistently oriented:" << ' ' << yes_no(m.oriented);
     if (flipped >= 0) o << " (after --orient flipped " << flipped << " faces)";
@@ -129,8 +132,8 @@ std::string info_text(const std::string& input, const ss::MeshInfo& m, long long
     return o.str();
 }
 
-int run_info(const std::string& input, bool as_json, bool orient) {
-    ss::TriangleSoup soup = load_input(input);
+int run_info(const std::string& input, const std::string& format, bool as_json, bool orient) {
+    ss::TriangleSoup soup = load_input(input, format);
     long long flipped = -1;
     if (orient) flipped = ss::orient_soup(soup);  // -1: not orientable, reported as a problem
     const ss::MeshInfo m = ss::mesh_info(soup);
@@ -146,10 +149,12 @@ struct StripArgs {
     std::string input, output;
     std::optional<std::string> indices, report, constraints, cycles, cycles_obj, out_dir;
     std::string format = "ply";
+    std::string input_format;  ///< `--input-format`
     unsigned jobs = 0;
     bool with_indices = false, with_cycles = false;
     std::optional<uint32_t> seed_face, source, target;
     bool no_greedy = false, orient = false;
+    ss::StripEngine engine = ss::StripEngine::Matching;
 };
 
 /// Removes the files this run has finished if a later step fails, so no partial set of outputs
@@ -169,94 +174,78 @@ private:
     std::vector<std::string> written_;
 };
 
-int run_strip(const StripArgs& a) {
-    // Unknown extension: RequestError before any work.
-    if (!ss::is_gltf_path(a.output)) ss::output_format_for(a.output);
+ss::PipelineOptions pipeline_options(const StripArgs& a) {
+    ss::PipelineOptions o;
+    o.strip.engine = a.engine;
+    o.strip.seed_face = a.seed_face;
+    o.strip.greedy = !a.no_greedy;
+    o.strip.source = a.source;
+    o.strip.target = a.target;
+    o.orient = a.orient;
+    o.cycles = a.cycles || a.cycles_obj;
+    o.name = a.input;
+    o.constraints_file = a.constraints;
+    return o;
+}
+
+/// Writes OUT and the optional files; returns the seconds spent.
+double write_outputs(const StripArgs& a, const ss::PipelineResult& r, OutputSet& outputs) {
     Stopwatch clock;
-    ss::TriangleSoup soup = load_input(a.input);
-    const double t_read = clock.lap();
-    // "build" = validation (and --orient) + corner table: everything between reading and stripping.
-    soup = ss::prepare_soup(std::move(soup), ss::PrepareOptions{a.orient}, a.input);
-
-    ss::StripOptions opt;
-    opt.seed_face = a.seed_face;
-    opt.greedy = !a.no_greedy;
-    opt.source = a.source;
-    opt.target = a.target;
-    if (a.constraints) {
-        std::vector<uint32_t> lines;
-        opt.constraint_edges = ss::read_constraints(*a.constraints, static_cast<uint32_t>(soup.points.size()), &lines);
-        ss::check_constraint_edges(*a.constraints, opt.constraint_edges, lines, soup);
-    }
-    ss::Mesh mesh = ss::Mesh::from_soup(soup);
-    const double t_build = clock.lap();
-    ss::StripResult result = ss::build_strip(std::move(mesh), opt);
-    ss::StripArrays arrays = ss::strip_arrays(result);
-    const std::vector<uint32_t> indices = ss::encode_triangle_strip(arrays.faces);
-    std::optional<ss::Cycles> cycles;
-    if (a.cycles || a.cycles_obj) cycles = ss::compute_fundamental_cycles(result);
-    const double t_strip = clock.lap();
-
-    OutputSet outputs;
-    if (ss::is_gltf_path(a.output)) ss::write_gltf_strip(a.output, arrays, indices);
-    else ss::write_strip_mesh(a.output, arrays.points, arrays.faces, arrays.parent);
+    if (ss::is_gltf_path(a.output))
+        ss::write_gltf_strip(a.output, r.arrays, r.indices);
+    else
+        ss::write_strip_mesh(a.output, r.arrays.points, r.arrays.faces, r.arrays.parent);
     outputs.done(a.output);
     if (a.indices) {
-        ss::write_indices(*a.indices, indices);
+        ss::write_indices(*a.indices, r.indices);
         outputs.done(*a.indices);
     }
-    if (cycles && a.cycles) {
-        ss::write_cycles_json(*a.cycles, *cycles);
+    if (r.cycles && a.cycles) {
+        ss::write_cycles_json(*a.cycles, *r.cycles);
         outputs.done(*a.cycles);
     }
-    if (cycles && a.cycles_obj) {
-        ss::write_cycles_obj(*a.cycles_obj, arrays, *cycles);
+    if (r.cycles && a.cycles_obj) {
+        ss::write_cycles_obj(*a.cycles_obj, r.arrays, *r.cycles);
         outputs.done(*a.cycles_obj);
     }
-    const double t_write_files = clock.lap();
+    return clock.lap();
+}
 
-    const auto& st = result.stats;
-    const double in_tris = st.input_triangles ? static_cast<double>(st.input_triangles) : 1.0;
-    json r;
-    r["input"] = a.input;
-    r["output"] = a.output;
-    r["input_triangles"] = st.input_triangles;
-    r["output_triangles"] = st.output_triangles;
-    r["splits"] = st.splits;
-    r["swaps"] = st.swaps;
-    r["strip_indices"] = indices.size();
-    r["genus"] = st.genus;
-    r["boundary_loops"] = st.boundary_loops;
-    r["fundamental_triangles"] = st.fundamental_triangles;
-    r["deferred_regions"] = st.deferred_regions;
-    r["indices_per_triangle"] = static_cast<double>(indices.size()) / in_tris;
-    r["extra_percent"] = 100.0 * (static_cast<double>(st.output_triangles) - static_cast<double>(st.input_triangles)) / in_tris;
-    r["options"] = {{"greedy", opt.greedy}, {"orient", a.orient}, {"constraint_edges", opt.constraint_edges.size()}};
-    if (cycles) {
-        r["cycles"] = cycles->cycles.size();
-        r["cycle_lengths"] = cycles->lengths;
-        size_t faces = 0;
-        for (const auto& c : cycles->cycles) faces += c.size();
-        r["cycle_faces_total"] = faces;
-    }
-    if (a.seed_face) r["options"]["seed_face"] = *a.seed_face;
-    if (a.source) r["options"]["source"] = *a.source;
-    if (a.target) r["options"]["target"] = *a.target;
-    // "write" covers the mesh and index files; the report itself is written after measuring.
-    r["seconds"] = {{"read", t_read}, {"build", t_build}, {"strip", t_strip}, {"write", t_write_files}};
-    if (a.report) {
-        ss::write_text_atomic(*a.report, r.dump(2) + "\n");
-        outputs.done(*a.report);
-    }
-    outputs.commit();
-
+void print_summary(const std::string& input, const ss::PipelineResult& r) {
+    const auto& st = r.strip.stats;
+    const auto& t = r.seconds;
     char line[512];
     std::snprintf(line, sizeof line,
                   "singlestrip: %s: %u -> %u triangles (%+.1f%%, %u splits), 1 strip of %zu indices (%.3f per input triangle), "
                   "genus %lld, %u boundary loops; read %.3fs build %.3fs strip %.3fs write %.3fs\n",
-                  a.input.c_str(), st.input_triangles, st.output_triangles, r["extra_percent"].get<double>(), st.splits, indices.size(),
-                  r["indices_per_triangle"].get<double>(), st.genus, st.boundary_loops, t_read, t_build, t_strip, t_write_files);
+                  input.c_str(), st.input_triangles, st.output_triangles, ss::extra_percent(st), st.splits, r.indices.size(),
+                  ss::indices_per_triangle(st, r.indices.size()), st.genus, st.boundary_loops, t.read, t.build, t.strip, t.write);
     std::cerr << line;
+}
+
+int run_strip(const StripArgs& a) {
+    // Unknown extension: RequestError before any work.
+    if (!ss::is_gltf_path(a.output)) ss::output_format_for(a.output);
+    Stopwatch clock;
+    ss::TriangleSoup soup = load_input(a.input, a.input_format);
+    const double t_read = clock.lap();
+    ss::PipelineResult r = ss::stripify(std::move(soup), pipeline_options(a));
+    r.seconds.read = t_read;
+
+    OutputSet outputs;
+    // "write" covers the mesh and index files; the report itself is written after measuring.
+    r.seconds.write = write_outputs(a, r, outputs);
+    if (a.report) {
+        ss::ReportInput rep;
+        rep.input = a.input;
+        rep.output = a.output;
+        rep.result = &r;
+        rep.stage_seconds = true;
+        ss::write_text_atomic(*a.report, ss::report_json(rep));
+        outputs.done(*a.report);
+    }
+    outputs.commit();
+    print_summary(a.input, r);
     return ss::kExitOk;
 }
 
@@ -264,39 +253,24 @@ struct VerifyArgs {
     std::string input, output;
     std::optional<std::string> indices, constraints, cycles;
     std::optional<uint32_t> source, target;
+    std::string input_format;  ///< `--input-format`
 };
 
 int run_verify(const VerifyArgs& a) {
-    ss::VerifyReport rep;
     if (ss::is_gltf_path(a.output))
-        throw ss::RequestError(a.output + ": verify reads .ply, .obj or .off results (glTF stores float32 positions, "
+        throw ss::RequestError(a.output +
+                               ": verify reads .ply, .obj or .off results (glTF stores float32 positions, "
                                "too coarse for the exact checks); write a .ply with the same options to verify");
-    if (is_builtin(a.input)) {
-        // The built-in model has no file: assemble what verify_files() would read.
-        ss::TriangleSoup in = load_input(a.input);
-        ss::OutputMesh out = ss::read_output_mesh(a.output);
-        ss::VerifyInput vi;
-        vi.in_points = std::move(in.points);
-        vi.in_faces = std::move(in.triangles);
-        vi.out_points = std::move(out.points);
-        vi.out_faces = std::move(out.faces);
-        vi.out_parent = std::move(out.parent);
-        if (a.indices) vi.indices = ss::read_index_file(*a.indices);
-        if (a.constraints) vi.constraints = ss::read_constraints(*a.constraints, static_cast<uint32_t>(vi.in_points.size()));
-        vi.source = a.source;
-        vi.target = a.target;
-        if (a.cycles) vi.cycles = ss::read_cycles_file(*a.cycles);
-        rep = ss::verify(vi);
-    } else {
-        ss::VerifyFileOptions o;
-        o.indices_path = a.indices;
-        o.constraints_path = a.constraints;
-        o.source = a.source;
-        o.target = a.target;
-        o.cycles_path = a.cycles;
-        o.input_format = g_input_format;
-        rep = ss::verify_files(a.input, a.output, o);
-    }
+    ss::VerifyFileOptions o;
+    o.indices_path = a.indices;
+    o.constraints_path = a.constraints;
+    o.source = a.source;
+    o.target = a.target;
+    o.cycles_path = a.cycles;
+    o.input_format = a.input_format;
+    // The built-in model has no file: it is generated and checked like a read input.
+    const ss::VerifyReport rep = ss::is_builtin_input(a.input) ? ss::verify_files(load_input(a.input, a.input_format), a.output, o)
+                                                               : ss::verify_files(a.input, a.output, o);
     std::cout << rep.to_string();
     if (!rep.to_string().empty() && rep.to_string().back() != '\n') std::cout << '\n';
     return rep.ok() ? ss::kExitOk : ss::kExitVerifyFailed;
@@ -322,13 +296,15 @@ int main(int argc, char** argv) {
     info->add_flag("--orient", info_orient, "Consistently re-orient an orientable mesh before reporting");
     const char* kInputFormatHelp = "Format of INPUT (obj, off, ply, stl) when its name does not tell, e.g. /dev/stdin";
     const auto input_format_check = CLI::IsMember({"obj", "off", "ply", "stl"}, CLI::ignore_case);
-    info->add_option("--input-format", g_input_format, kInputFormatHelp)->check(input_format_check);
+    std::string info_format;
+    info->add_option("--input-format", info_format, kInputFormatHelp)->check(input_format_check);
 
     StripArgs sa;
     auto* strip = app.add_subcommand("strip", "Turn the mesh into one triangle strip");
     strip->add_option("INPUT", sa.inputs, "Input mesh file(s) or builtin:genus2 (several need --out-dir)")->required();
     strip->add_option("-o,--output", sa.output, "Output mesh (.ply binary with parent, .obj, .off, .glb/.gltf), faces in strip order");
-    strip->add_option("--out-dir", sa.out_dir, "Batch mode: strip every INPUT on all cores into DIR (<stem>.<format> + <stem>.report.json)");
+    strip->add_option("--out-dir", sa.out_dir,
+                      "Batch mode: strip every INPUT on all cores into DIR (<stem>.<format> + <stem>.report.json)");
     strip->add_option("--format", sa.format, "Batch mode: result format (ply, obj, off, glb, gltf)")->capture_default_str();
     strip->add_option("-j,--jobs", sa.jobs, "Batch mode: worker threads (0 = all cores)");
     strip->add_flag("--with-indices", sa.with_indices, "Batch mode: also write <stem>.indices.txt");
@@ -336,14 +312,19 @@ int main(int argc, char** argv) {
     strip->add_option("--indices", sa.indices, "Write the GL_TRIANGLE_STRIP index sequence (text)");
     strip->add_option("--report", sa.report, "Write a JSON report");
     strip->add_option("--seed-face", sa.seed_face, "Input face to start the strip from");
+    add_engine_option(
+        strip, [&sa](ss::StripEngine e) { sa.engine = e; },
+        "Strip engine: matching (default) or growth (the paper's builder, for comparison)");
     strip->add_flag("--no-greedy", sa.no_greedy, "Use the paper's plain same-direction turn rule");
     strip->add_flag("--orient", sa.orient, "Consistently re-orient an orientable mesh first");
-    strip->add_option("--input-format", g_input_format, kInputFormatHelp)->check(input_format_check);
+    strip->add_option("--input-format", sa.input_format, kInputFormatHelp)->check(input_format_check);
     strip->add_option("--constraints", sa.constraints, "Edges the strip must not cross: one polyline of vertex indices per line");
     strip->add_option("--source", sa.source, "The strip starts at a face incident to this input vertex");
     strip->add_option("--target", sa.target, "The strip ends at a face incident to this input vertex");
-    strip->add_option("--cycles", sa.cycles, "Write the fundamental cycles (paper section 4) as JSON {\"cycles\": [[face, ...], ...], \"lengths\": [...]}");
-    strip->add_option("--cycles-obj", sa.cycles_obj, "Write the fundamental cycles as OBJ polylines through face centroids and shared-edge midpoints");
+    strip->add_option("--cycles", sa.cycles,
+                      "Write the fundamental cycles (paper section 4) as JSON {\"cycles\": [[face, ...], ...], \"lengths\": [...]}");
+    strip->add_option("--cycles-obj", sa.cycles_obj,
+                      "Write the fundamental cycles as OBJ polylines through face centroids and shared-edge midpoints");
 
     VerifyArgs va;
     auto* verify = app.add_subcommand("verify", "Independently check a strip output against its input (exit 5 on failure)");
@@ -354,7 +335,7 @@ int main(int argc, char** argv) {
     verify->add_option("--source", va.source, "Required first-face vertex");
     verify->add_option("--target", va.target, "Required last-face vertex");
     verify->add_option("--cycles", va.cycles, "Cycles JSON to check for independence");
-    verify->add_option("--input-format", g_input_format, kInputFormatHelp)->check(input_format_check);
+    verify->add_option("--input-format", va.input_format, kInputFormatHelp)->check(input_format_check);
 
 #ifdef SINGLESTRIP_HAVE_RENDER
     ss::render::RenderArgs ra;
@@ -362,6 +343,10 @@ int main(int argc, char** argv) {
     render->add_option("RESULT", ra.input, "Result mesh written by `singlestrip strip` (.ply/.obj/.off)")->required();
     render->add_option("-o,--output", ra.output, "PNG picture")->required();
     render->add_option("--cycles", ra.cycles, "Cycles JSON to draw");
+    add_engine_option(
+        render, [&ra](ss::StripEngine e) { ra.engine = e; },
+        "Strip RESULT first with this engine (matching or growth): RESULT is then any input mesh");
+    render->add_flag("--with-cycles", ra.with_cycles, "With --engine: compute the fundamental cycles and draw them");
     render->add_option("--constraints", ra.constraints, "Constraint polylines to draw");
     render->add_option("--source", ra.source, "Vertex marked green (strip start)");
     render->add_option("--target", ra.target, "Vertex marked red (strip end)");
@@ -386,10 +371,11 @@ int main(int argc, char** argv) {
     }
 
     try {
-        if (info->parsed()) return run_info(info_input, info_json_flag, info_orient);
+        if (info->parsed()) return run_info(info_input, info_format, info_json_flag, info_orient);
         if (strip->parsed()) {
             if (sa.out_dir) {
-                if (!sa.output.empty() || sa.constraints || sa.source || sa.target || sa.report || sa.indices || sa.cycles || sa.cycles_obj) {
+                if (!sa.output.empty() || sa.constraints || sa.source || sa.target || sa.report || sa.indices || sa.cycles ||
+                    sa.cycles_obj) {
                     std::cerr << "singlestrip: error: --out-dir (batch mode) cannot be combined with -o, --report, --indices, "
                                  "--cycles, --cycles-obj, --constraints, --source or --target (they are per file)\n";
                     return ss::kExitUsage;
@@ -397,10 +383,11 @@ int main(int argc, char** argv) {
                 ss::BatchOptions b;
                 b.out_dir = *sa.out_dir;
                 b.format = sa.format;
-                b.input_format = g_input_format;
+                b.input_format = sa.input_format;
                 b.write_indices = sa.with_indices;
                 b.cycles = sa.with_cycles;
                 b.greedy = !sa.no_greedy;
+                b.engine = sa.engine;
                 b.orient = sa.orient;
                 b.seed_face = sa.seed_face;
                 b.threads = sa.jobs;
@@ -415,7 +402,17 @@ int main(int argc, char** argv) {
         }
         if (verify->parsed()) return run_verify(va);
 #ifdef SINGLESTRIP_HAVE_RENDER
-        if (render->parsed()) return ss::render::run_render_command(ra);
+        if (render->parsed()) {
+            if (ra.cycles && ra.engine) {
+                std::cerr << "singlestrip: error: render --cycles names faces of a result file; with --engine use --with-cycles\n";
+                return ss::kExitUsage;
+            }
+            if (ra.with_cycles && !ra.engine) {
+                std::cerr << "singlestrip: error: render --with-cycles needs --engine (the input is then stripped first)\n";
+                return ss::kExitUsage;
+            }
+            return ss::render::run_render_command(ra);
+        }
 #endif
         return ss::kExitUsage;
     } catch (const ss::Error& e) {

@@ -1,9 +1,10 @@
 // singlestrip — the whole pipeline with every result checked, shared by the fuzz targets and
 // tests/test_mutation.cpp (header-only; compiles with gcc and clang).
 //
-// check_pipeline() runs prepare_soup -> Mesh::from_soup -> build_strip -> strip_arrays ->
-// encode_triangle_strip -> compute_fundamental_cycles (+ tree_cotree_cycles) and passes every
-// successful result to the independent verifier. Expected refusals (InputError for a bad mesh,
+// check_pipeline() runs stripify() (pipeline.hpp: prepare_soup -> Mesh::from_soup ->
+// build_strip -> strip_arrays -> encode_triangle_strip -> compute_fundamental_cycles, with its
+// self checks) plus tree_cotree_cycles and passes every successful result to the independent
+// verifier. Expected refusals (InputError for a bad mesh,
 // RequestError for an impossible request) are not findings; anything else is:
 //   * an InternalError or any other exception,
 //   * a verify() failure (a wrong strip, wrong indices, broken constraints, wrong cycles),
@@ -16,19 +17,18 @@
 #include <exception>
 #include <map>
 #include <optional>
-#include <typeinfo>
 #include <string>
+#include <typeinfo>
 #include <utility>
 #include <vector>
 
 #include "singlestrip/cycles.hpp"
 #include "singlestrip/encode.hpp"
 #include "singlestrip/errors.hpp"
-#include "singlestrip/mesh.hpp"
+#include "singlestrip/pipeline.hpp"
 #include "singlestrip/soup.hpp"
 #include "singlestrip/strip.hpp"
 #include "singlestrip/tree_cotree.hpp"
-#include "singlestrip/validate.hpp"
 #include "singlestrip/verify.hpp"
 
 namespace singlestrip::fuzzcheck {
@@ -44,8 +44,8 @@ inline std::string check_soup(const TriangleSoup& s) {
     for (size_t t = 0; t < s.triangles.size(); ++t)
         for (uint32_t i : s.triangles[t])
             if (i >= s.points.size())
-                return "reader returned triangle " + std::to_string(t) + " with vertex " + std::to_string(i) + " >= " +
-                       std::to_string(s.points.size());
+                return "reader returned triangle " + std::to_string(t) + " with vertex " + std::to_string(i) +
+                       " >= " + std::to_string(s.points.size());
     if (!s.source_polygon.empty() && s.source_polygon.size() != s.triangles.size())
         return "reader returned source_polygon of size " + std::to_string(s.source_polygon.size()) + " for " +
                std::to_string(s.triangles.size()) + " triangles";
@@ -56,96 +56,85 @@ inline std::string check_soup(const TriangleSoup& s) {
 struct Request {
     bool orient = false;
     StripOptions strip;
-    bool cycles = true;       ///< run compute_fundamental_cycles and tree_cotree_cycles
+    bool cycles = true;  ///< run compute_fundamental_cycles and tree_cotree_cycles
 };
+
+/// The stats of a stripped result must agree with the input and the strip order.
+inline std::string check_counts(const PipelineResult& r) {
+    const auto& st = r.strip.stats;
+    if (st.input_triangles != r.input.triangles.size())
+        return "stats.input_triangles " + std::to_string(st.input_triangles) + " != " + std::to_string(r.input.triangles.size());
+    if (st.splits > st.input_triangles) return "more splits (" + std::to_string(st.splits) + ") than input faces";
+    if (st.output_triangles != st.input_triangles + 2 * st.splits || r.strip.order.size() != st.output_triangles)
+        return "face count " + std::to_string(r.strip.order.size()) + " / " + std::to_string(st.output_triangles) + " does not match " +
+               std::to_string(st.input_triangles) + " + 2 * " + std::to_string(st.splits) + " splits";
+    if (r.indices.size() > triangle_strip_bound(r.arrays.faces.size())) return "encoded strip longer than triangle_strip_bound";
+    if (r.cycles && r.cycles->sources.size() != r.cycles->cycles.size())
+        return std::to_string(r.cycles->sources.size()) + " cycle sources for " + std::to_string(r.cycles->cycles.size()) + " cycles";
+    return {};
+}
+
+/// verify() on the result; with cycles, also on the tree-cotree cycles of the same strip.
+inline std::string check_result(const PipelineResult& r, const Request& req, const char*& where) {
+    where = "verify";
+    VerifyInput vi;
+    vi.in_points = r.input.points;
+    vi.in_faces = r.input.triangles;
+    vi.out_points = r.arrays.points;
+    vi.out_faces = r.arrays.faces;
+    vi.out_parent = r.arrays.parent;
+    vi.indices = r.indices;
+    vi.constraints = req.strip.constraint_edges;
+    vi.source = req.strip.source;
+    vi.target = req.strip.target;
+    // cycles.hpp guarantees a basis of H1 (2g+h-1 independent closed chains) for any seed,
+    // constraints and source/target: verify() checks count and independence.
+    if (r.cycles) vi.cycles = r.cycles->cycles;
+    if (VerifyReport rep = verify(vi); !rep.ok()) return "verify failed:\n" + rep.to_string();
+    if (!req.cycles) return {};
+    where = "tree_cotree_cycles";
+    vi.indices.reset();
+    vi.constraints.clear();
+    vi.source.reset();
+    vi.target.reset();
+    vi.cycles = tree_cotree_cycles(r.strip).cycles;
+    if (VerifyReport rep = verify(vi); !rep.ok()) return "verify failed on tree-cotree cycles:\n" + rep.to_string();
+    return {};
+}
 
 /// Runs the pipeline on `soup` (see top of file). `outcome` (optional) tells whether the input
 /// was refused or stripped.
 inline std::string check_pipeline(TriangleSoup soup, const Request& req, Outcome* outcome = nullptr) {
     if (outcome) *outcome = Outcome::Refused;
-    std::string stage = "prepare_soup";
+    PipelineStage stage = PipelineStage::Checks;
+    const char* after = nullptr;  // a check after the pipeline, when it is the one that threw
+    auto where = [&] { return std::string(after ? after : stage_name(stage)); };
     try {
-        TriangleSoup in;
+        PipelineOptions o;
+        o.strip = req.strip;
+        o.orient = req.orient;
+        o.cycles = req.cycles;
+        o.name = "fuzz";
+        o.self_check = true;
+        PipelineResult r;
         try {
-            in = prepare_soup(std::move(soup), PrepareOptions{req.orient}, "fuzz");
+            r = stripify(std::move(soup), o, &stage);
         } catch (const InputError&) {
-            return {};
-        }
-        stage = "Mesh::from_soup";
-        Mesh mesh;
-        try {
-            mesh = Mesh::from_soup(in);
-        } catch (const InputError& e) {
-            return std::string("prepare_soup accepted a soup that Mesh::from_soup rejects: ") + e.what();
-        }
-        if (mesh.num_components() != 1) return "prepare_soup accepted a mesh with " + std::to_string(mesh.num_components()) + " components";
-
-        stage = "build_strip";
-        StripResult r;
-        try {
-            r = build_strip(mesh, req.strip);
+            if (stage == PipelineStage::Checks) return {};
+            throw;
         } catch (const RequestError&) {
-            return {};
+            if (stage == PipelineStage::Strip) return {};
+            throw;
         }
         if (outcome) *outcome = Outcome::Stripped;
-        const auto& st = r.stats;
-        if (st.input_triangles != in.triangles.size())
-            return "stats.input_triangles " + std::to_string(st.input_triangles) + " != " + std::to_string(in.triangles.size());
-        if (st.splits > st.input_triangles) return "more splits (" + std::to_string(st.splits) + ") than input faces";
-        if (st.output_triangles != st.input_triangles + 2 * st.splits || r.order.size() != st.output_triangles)
-            return "face count " + std::to_string(r.order.size()) + " / " + std::to_string(st.output_triangles) + " does not match " +
-                   std::to_string(st.input_triangles) + " + 2 * " + std::to_string(st.splits) + " splits";
-
-        stage = "strip_arrays";
-        StripArrays a = strip_arrays(r);
-        stage = "encode_triangle_strip";
-        std::vector<uint32_t> indices = encode_triangle_strip(a.faces);
-        if (indices.size() > triangle_strip_bound(a.faces.size())) return "encoded strip longer than triangle_strip_bound";
-
-        VerifyInput vi;
-        vi.in_points = in.points;
-        vi.in_faces = in.triangles;
-        vi.out_points = a.points;
-        vi.out_faces = a.faces;
-        vi.out_parent = a.parent;
-        vi.indices = std::move(indices);
-        vi.constraints = req.strip.constraint_edges;
-        vi.source = req.strip.source;
-        vi.target = req.strip.target;
-
-        if (req.cycles) {
-            stage = "compute_fundamental_cycles";
-            Cycles cy = compute_fundamental_cycles(r);
-            if (cy.sources.size() != cy.cycles.size())
-                return std::to_string(cy.sources.size()) + " cycle sources for " + std::to_string(cy.cycles.size()) + " cycles";
-            // cycles.hpp guarantees a basis of H1 (2g+h-1 independent closed chains) for any
-            // seed, constraints and source/target: verify() checks count and independence.
-            vi.cycles = cy.cycles;
-        }
-        stage = "verify";
-        VerifyReport rep = verify(vi);
-        if (!rep.ok()) return "verify failed:\n" + rep.to_string();
-
-        if (req.cycles) {
-            stage = "tree_cotree_cycles";
-            Cycles tc = tree_cotree_cycles(r);
-            VerifyInput v2;
-            v2.in_points = std::move(vi.in_points);
-            v2.in_faces = std::move(vi.in_faces);
-            v2.out_points = std::move(vi.out_points);
-            v2.out_faces = std::move(vi.out_faces);
-            v2.out_parent = std::move(vi.out_parent);
-            v2.cycles = tc.cycles;
-            VerifyReport rep2 = verify(v2);
-            if (!rep2.ok()) return "verify failed on tree-cotree cycles:\n" + rep2.to_string();
-        }
-        return {};
+        if (std::string p = check_counts(r); !p.empty()) return p;
+        return check_result(r, req, after);
     } catch (const InternalError& e) {
-        return "InternalError in " + stage + ": " + e.what();
+        return "InternalError in " + where() + ": " + e.what();
     } catch (const Error& e) {
-        return "unexpected " + std::string(typeid(e).name()) + " in " + stage + ": " + e.what();
+        return "unexpected " + std::string(typeid(e).name()) + " in " + where() + ": " + e.what();
     } catch (const std::exception& e) {
-        return "unexpected std::exception in " + stage + ": " + e.what();
+        return "unexpected std::exception in " + where() + ": " + e.what();
     }
 }
 

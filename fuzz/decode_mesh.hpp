@@ -1,6 +1,6 @@
 // singlestrip fuzzing — a small oriented manifold (or a deliberately broken soup) decoded from
 // fuzz bytes: a generator from generators.hpp, random edge flips, holes, jittered geometry,
-// face shuffles and flips; plus strip options (seed, constraints, source/target).
+// face shuffles and flips; plus strip options (seed, constraints, source/target, engine).
 #pragma once
 
 #include <fuzzer/FuzzedDataProvider.h>
@@ -15,6 +15,7 @@
 #include "singlestrip/errors.hpp"
 #include "singlestrip/generators.hpp"
 #include "singlestrip/soup.hpp"
+#include "singlestrip/strip.hpp"
 
 namespace singlestrip::fuzzcheck {
 
@@ -25,7 +26,9 @@ inline uint64_t mix(uint64_t x) {
     x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
     return x ^ (x >> 31);
 }
-inline double unit(uint64_t x) { return static_cast<double>(mix(x) >> 11) * 0x1.0p-53; }
+inline double unit(uint64_t x) {
+    return static_cast<double>(mix(x) >> 11) * 0x1.0p-53;
+}
 
 /// Moves every vertex by up to +-amount per axis so that no face is degenerate (generators'
 /// planar grids can fold into collinear triangles after edge flips; verify() rightly rejects
@@ -41,18 +44,42 @@ inline TriangleSoup decode_soup(FuzzedDataProvider& in) {
     const int kind = in.ConsumeIntegralInRange<int>(0, 13);
     auto small = [&](uint32_t lo, uint32_t hi) { return in.ConsumeIntegralInRange<uint32_t>(lo, hi); };
     switch (kind) {
-        case 0: s = make_single_triangle(); break;
-        case 1: s = make_two_triangles(); break;
-        case 2: s = make_fan(small(1, 12)); break;
-        case 3: s = make_corridor(small(1, 20)); break;
-        case 4: s = make_grid_disk(small(1, 9), small(1, 9)); break;
-        case 5: s = make_annulus(small(3, 10), small(1, 3)); break;
-        case 6: s = make_disk_with_holes(small(0, 3), small(1, 2)); break;
-        case 7: s = make_icosphere(small(0, 1)); break;
-        case 8: s = make_uv_sphere(small(3, 8), small(2, 6)); break;
-        case 9: s = make_torus(small(3, 8), small(3, 6)); break;
-        case 10: s = make_genus_surface(small(1, 2), 1); break;
-        case 11: s = make_moebius_soup(small(3, 6)); break;
+        case 0:
+            s = make_single_triangle();
+            break;
+        case 1:
+            s = make_two_triangles();
+            break;
+        case 2:
+            s = make_fan(small(1, 12));
+            break;
+        case 3:
+            s = make_corridor(small(1, 20));
+            break;
+        case 4:
+            s = make_grid_disk(small(1, 9), small(1, 9));
+            break;
+        case 5:
+            s = make_annulus(small(3, 10), small(1, 3));
+            break;
+        case 6:
+            s = make_disk_with_holes(small(0, 3), small(1, 2));
+            break;
+        case 7:
+            s = make_icosphere(small(0, 1));
+            break;
+        case 8:
+            s = make_uv_sphere(small(3, 8), small(2, 6));
+            break;
+        case 9:
+            s = make_torus(small(3, 8), small(3, 6));
+            break;
+        case 10:
+            s = make_genus_surface(small(1, 2), 1);
+            break;
+        case 11:
+            s = make_moebius_soup(small(3, 6));
+            break;
         default: {
             // Raw soup: up to 12 vertices in general position, faces from the bytes. Mostly
             // rejected by prepare_soup; those that pass are arbitrary small manifolds.
@@ -94,7 +121,8 @@ inline TriangleSoup decode_soup(FuzzedDataProvider& in) {
         std::swap(t[1], t[2]);
     }
     if (in.ConsumeIntegralInRange<int>(0, 15) == 0 && nf > 1) s.triangles.erase(s.triangles.begin() + small(0, nf - 1));
-    if (in.ConsumeIntegralInRange<int>(0, 31) == 0) s.triangles.push_back(s.triangles[small(0, static_cast<uint32_t>(s.triangles.size()) - 1)]);
+    if (in.ConsumeIntegralInRange<int>(0, 31) == 0)
+        s.triangles.push_back(s.triangles[small(0, static_cast<uint32_t>(s.triangles.size()) - 1)]);
     return s;
 }
 
@@ -136,15 +164,23 @@ inline void decode_options(FuzzedDataProvider& in, const TriangleSoup& s, Reques
     req.cycles = in.ConsumeIntegralInRange<int>(0, 3) != 0;
 }
 
+/// The strip engine, decoded after everything else so older inputs decode as before. Once the
+/// bytes have run out ConsumeBool() is false and the input's length parity picks the engine, so
+/// the existing corpus exercises both.
+inline StripEngine decode_engine(FuzzedDataProvider& in, size_t size) {
+    return in.ConsumeBool() != ((size & 1) != 0) ? StripEngine::Growth : StripEngine::Matching;
+}
+
 /// Prints the decoded case as an OFF file plus the options (SINGLESTRIP_FUZZ_VERBOSE=1), so a
 /// finding can be replayed with the CLI.
 inline void dump(const TriangleSoup& s, const Request& req) {
     std::fprintf(stderr, "OFF\n%zu %zu 0\n", s.points.size(), s.triangles.size());
     for (const auto& p : s.points) std::fprintf(stderr, "%.17g %.17g %.17g\n", p[0], p[1], p[2]);
     for (const auto& t : s.triangles) std::fprintf(stderr, "3 %u %u %u\n", t[0], t[1], t[2]);
-    std::fprintf(stderr, "# orient=%d greedy=%d cycles=%d seed_face=%lld source=%lld target=%lld constraints:", req.orient,
-                 req.strip.greedy, req.cycles, req.strip.seed_face ? (long long)*req.strip.seed_face : -1LL,
-                 req.strip.source ? (long long)*req.strip.source : -1LL, req.strip.target ? (long long)*req.strip.target : -1LL);
+    std::fprintf(stderr, "# engine=%s orient=%d greedy=%d cycles=%d seed_face=%lld source=%lld target=%lld constraints:",
+                 engine_name(req.strip.engine), req.orient, req.strip.greedy, req.cycles,
+                 req.strip.seed_face ? (long long)*req.strip.seed_face : -1LL, req.strip.source ? (long long)*req.strip.source : -1LL,
+                 req.strip.target ? (long long)*req.strip.target : -1LL);
     for (const auto& [a, b] : req.strip.constraint_edges) std::fprintf(stderr, " %u-%u", a, b);
     std::fprintf(stderr, "\n");
 }

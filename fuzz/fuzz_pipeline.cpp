@@ -1,5 +1,6 @@
-// libFuzzer target for the whole pipeline: a small mesh and options decoded from the bytes
-// (decode_mesh.hpp), run through check_pipeline.hpp; every successful result must pass verify().
+// libFuzzer target for the whole pipeline: a small mesh and options (engine included) decoded
+// from the bytes (decode_mesh.hpp), run through check_pipeline.hpp; every successful result must
+// pass verify().
 #include <cstdint>
 #include <cstdlib>
 
@@ -18,6 +19,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     }
     fuzzcheck::Request req;
     fuzzcheck::decode_options(in, soup, req);
+    req.strip.engine = fuzzcheck::decode_engine(in, size);
     if (std::getenv("SINGLESTRIP_FUZZ_VERBOSE")) fuzzcheck::dump(soup, req);
     if (auto p = fuzzcheck::check_pipeline(std::move(soup), req); !p.empty()) fuzzcheck::finding(p);
     return 0;

@@ -1,13 +1,15 @@
 // Python bindings (pybind11 + numpy): `import singlestrip`.
 //
 //   singlestrip.strip(vertices, faces, constraints=None, source=None, target=None, cycles=False,
-//                     seed_face=None, greedy=True, orient=False, name="input") -> dict
+//                     seed_face=None, greedy=True, orient=False, name="input",
+//                     engine="matching") -> dict
 //   singlestrip.verify(vertices, faces, result, constraints=None, source=None, target=None) -> dict
 //   singlestrip.decode_strip(indices) -> (T, 3) uint32 array
 //
-// Input checks are the CLI's (prepare_soup, the same messages, prefixed by `name` where the CLI
-// has the file name); every singlestrip::InputError / RequestError becomes ValueError, an
-// InternalError RuntimeError. The GIL is released while the strip is built.
+// strip() runs the CLI's pipeline (stripify(), pipeline.hpp: the same checks and messages,
+// prefixed by `name` where the CLI has the file name) and its report (report.hpp). Every
+// singlestrip::InputError / RequestError becomes ValueError, an InternalError RuntimeError.
+// The GIL is released while the strip is built.
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -19,12 +21,11 @@
 #include <utility>
 #include <vector>
 
-#include "singlestrip/cycles.hpp"
 #include "singlestrip/encode.hpp"
 #include "singlestrip/errors.hpp"
-#include "singlestrip/mesh.hpp"
+#include "singlestrip/pipeline.hpp"
+#include "singlestrip/report.hpp"
 #include "singlestrip/strip.hpp"
-#include "singlestrip/validate.hpp"
 #include "singlestrip/verify.hpp"
 
 namespace py = pybind11;
@@ -41,8 +42,7 @@ std::vector<ss::Point3> to_points(const py::handle& obj, const char* what) {
     } catch (const py::error_already_set&) {
         a = {};
     }
-    if (!a || a.ndim() != 2 || a.shape(1) != 3)
-        throw py::value_error(std::string(what) + " must be an array of shape (n, 3) of numbers");
+    if (!a || a.ndim() != 2 || a.shape(1) != 3) throw py::value_error(std::string(what) + " must be an array of shape (n, 3) of numbers");
     std::vector<ss::Point3> pts(static_cast<size_t>(a.shape(0)));
     auto r = a.unchecked<2>();
     for (py::ssize_t i = 0; i < a.shape(0); ++i)
@@ -63,8 +63,7 @@ std::vector<ss::Triangle> to_faces(const py::handle& obj, size_t num_vertices, c
     } catch (const py::error_already_set&) {
         a = {};
     }
-    if (!a || a.ndim() != 2 || a.shape(1) != 3)
-        throw py::value_error(std::string(what) + " must be an integer array of shape (m, 3)");
+    if (!a || a.ndim() != 2 || a.shape(1) != 3) throw py::value_error(std::string(what) + " must be an integer array of shape (m, 3)");
     std::vector<ss::Triangle> f(static_cast<size_t>(a.shape(0)));
     auto r = a.unchecked<2>();
     for (py::ssize_t i = 0; i < a.shape(0); ++i)
@@ -94,14 +93,12 @@ Pairs to_constraints(const py::object& o, size_t num_vertices) {
     for (const py::handle& poly : o) {
         std::vector<long long> ids;
         for (const py::handle& x : poly) ids.push_back(x.cast<long long>());
-        if (ids.size() < 2)
-            throw py::value_error("constraints: polyline " + std::to_string(line) + " has fewer than 2 vertices");
+        if (ids.size() < 2) throw py::value_error("constraints: polyline " + std::to_string(line) + " has fewer than 2 vertices");
         for (long long v : ids)
             if (v < 0 || static_cast<unsigned long long>(v) >= num_vertices)
                 throw py::value_error("constraints: polyline " + std::to_string(line) + ": vertex " + std::to_string(v) +
                                       " is out of range (" + std::to_string(num_vertices) + " vertices)");
-        for (size_t i = 0; i + 1 < ids.size(); ++i)
-            pairs.emplace_back(static_cast<uint32_t>(ids[i]), static_cast<uint32_t>(ids[i + 1]));
+        for (size_t i = 0; i + 1 < ids.size(); ++i) pairs.emplace_back(static_cast<uint32_t>(ids[i]), static_cast<uint32_t>(ids[i + 1]));
         ++line;
     }
     return pairs;
@@ -137,72 +134,53 @@ auto translate(F&& f) -> decltype(f()) {
     }
 }
 
+ss::StripEngine to_engine(const std::string& name) {
+    if (const auto e = ss::parse_engine(name)) return *e;
+    throw py::value_error("unknown engine '" + name + "' (choices: matching, growth)");
+}
+
 py::dict strip(const py::object& vertices, const py::object& faces, const py::object& constraints, const py::object& source,
-               const py::object& target, bool cycles, const py::object& seed_face, bool greedy, bool orient,
-               const std::string& name) {
+               const py::object& target, bool cycles, const py::object& seed_face, bool greedy, bool orient, const std::string& name,
+               const std::string& engine) {
     ss::TriangleSoup soup;
     soup.points = to_points(vertices, name.c_str());
     soup.triangles = to_faces(faces, soup.points.size(), name.c_str());
     if (soup.triangles.empty()) throw py::value_error(name + ": the mesh has no faces");
-    ss::StripOptions opt;
-    opt.greedy = greedy;
-    opt.source = to_vertex(source, "source");
-    opt.target = to_vertex(target, "target");
-    opt.seed_face = to_vertex(seed_face, "seed_face");
-    opt.constraint_edges = to_constraints(constraints, soup.points.size());
+    ss::PipelineOptions opt;
+    opt.strip.engine = to_engine(engine);
+    opt.strip.greedy = greedy;
+    opt.strip.source = to_vertex(source, "source");
+    opt.strip.target = to_vertex(target, "target");
+    opt.strip.seed_face = to_vertex(seed_face, "seed_face");
+    opt.strip.constraint_edges = to_constraints(constraints, soup.points.size());
+    opt.orient = orient;
+    opt.cycles = cycles;
+    opt.name = name;
 
-    ss::StripResult result;
-    ss::StripArrays arrays;
-    std::vector<uint32_t> indices;
-    ss::Cycles cyc;
+    ss::PipelineResult r;
     translate([&] {
         py::gil_scoped_release release;
-        soup = ss::prepare_soup(std::move(soup), ss::PrepareOptions{orient}, name);
-        result = ss::build_strip(ss::Mesh::from_soup(soup), opt);
-        arrays = ss::strip_arrays(result);
-        indices = ss::encode_triangle_strip(arrays.faces);
-        if (cycles) cyc = ss::compute_fundamental_cycles(result);
+        r = ss::stripify(std::move(soup), opt);
         return 0;
     });
 
     py::dict out;
-    out["vertices"] = rows_array<double>(arrays.points);
-    out["faces"] = rows_array<uint32_t>(arrays.faces);
-    out["parent"] = vec_array(arrays.parent);
-    out["strip"] = vec_array(indices);
-    if (cycles) {
+    out["vertices"] = rows_array<double>(r.arrays.points);
+    out["faces"] = rows_array<uint32_t>(r.arrays.faces);
+    out["parent"] = vec_array(r.arrays.parent);
+    out["strip"] = vec_array(r.indices);
+    if (r.cycles) {
         py::list cl;
-        for (const auto& c : cyc.cycles) cl.append(vec_array(c));
+        for (const auto& c : r.cycles->cycles) cl.append(vec_array(c));
         out["cycles"] = cl;
-        out["cycle_lengths"] = vec_array(cyc.lengths);
+        out["cycle_lengths"] = vec_array(r.cycles->lengths);
     } else {
         out["cycles"] = py::none();
     }
-    // Same keys as the CLI's --report (minus file names and timings).
-    const auto& st = result.stats;
-    const double in_tris = st.input_triangles ? static_cast<double>(st.input_triangles) : 1.0;
-    py::dict rep;
-    rep["input_triangles"] = st.input_triangles;
-    rep["output_triangles"] = st.output_triangles;
-    rep["splits"] = st.splits;
-    rep["swaps"] = st.swaps;
-    rep["strip_indices"] = indices.size();
-    rep["genus"] = st.genus;
-    rep["boundary_loops"] = st.boundary_loops;
-    rep["fundamental_triangles"] = st.fundamental_triangles;
-    rep["deferred_regions"] = st.deferred_regions;
-    rep["indices_per_triangle"] = static_cast<double>(indices.size()) / in_tris;
-    rep["extra_percent"] = 100.0 * (static_cast<double>(st.output_triangles) - static_cast<double>(st.input_triangles)) / in_tris;
-    py::dict opts;
-    opts["greedy"] = greedy;
-    opts["orient"] = orient;
-    opts["constraint_edges"] = opt.constraint_edges.size();
-    if (opt.seed_face) opts["seed_face"] = *opt.seed_face;
-    if (opt.source) opts["source"] = *opt.source;
-    if (opt.target) opts["target"] = *opt.target;
-    rep["options"] = opts;
-    if (cycles) rep["cycles"] = cyc.cycles.size();
-    out["report"] = rep;
+    // The CLI's --report keys (report.hpp), minus file names and timings.
+    ss::ReportInput rep;
+    rep.result = &r;
+    out["report"] = py::module_::import("json").attr("loads")(ss::report_json(rep));
     return out;
 }
 
@@ -257,9 +235,9 @@ py::dict verify(const py::object& vertices, const py::object& faces, const py::d
 PYBIND11_MODULE(singlestrip, m) {
     m.doc() = "singlestrip: one triangle strip for an oriented 2-manifold triangle mesh";
     m.attr("__version__") = "0.1.0";
-    m.def("strip", &strip, py::arg("vertices"), py::arg("faces"), py::arg("constraints") = py::none(),
-          py::arg("source") = py::none(), py::arg("target") = py::none(), py::arg("cycles") = false,
-          py::arg("seed_face") = py::none(), py::arg("greedy") = true, py::arg("orient") = false, py::arg("name") = "input",
+    m.def("strip", &strip, py::arg("vertices"), py::arg("faces"), py::arg("constraints") = py::none(), py::arg("source") = py::none(),
+          py::arg("target") = py::none(), py::arg("cycles") = false, py::arg("seed_face") = py::none(), py::arg("greedy") = true,
+          py::arg("orient") = false, py::arg("name") = "input", py::arg("engine") = "matching",
           R"doc(Turn a triangle mesh into ONE triangle strip.
 
 vertices: (n, 3) floats; faces: (m, 3) vertex indices (0-based), consistently oriented
@@ -268,11 +246,13 @@ constraints: polylines of vertex ids (or an (E, 2) array of edges) the strip mus
 source/target: vertex ids the first/last strip face must touch. seed_face: input face to start.
 cycles: also compute the fundamental cycles (face chains into the output faces).
 name: prefix of error messages (the CLI uses the file name).
+engine: "matching" (default) or "growth" (the paper's builder, for comparison).
 
 Returns a dict: vertices (n', 3) float64 (input vertices first, midpoints after), faces (m', 3)
 uint32 in strip order, parent (m',) uint32 input face of each output face, strip (k,) uint32
 GL_TRIANGLE_STRIP indices, cycles (list of uint32 arrays, or None), report (dict).
-Raises ValueError for invalid input or an impossible request (same messages as the CLI).)doc");
+Raises ValueError for invalid input, an impossible request or an unknown engine (same messages
+as the CLI).)doc");
     m.def("verify", &verify, py::arg("vertices"), py::arg("faces"), py::arg("result"), py::arg("constraints") = py::none(),
           py::arg("source") = py::none(), py::arg("target") = py::none(),
           R"doc(Independently check `result` (a dict as returned by strip(): vertices, faces, optional parent,

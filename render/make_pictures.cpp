@@ -18,12 +18,10 @@
 
 #include "render/render.hpp"
 #include "singlestrip/cycles.hpp"
-#include "singlestrip/encode.hpp"
 #include "singlestrip/errors.hpp"
 #include "singlestrip/io.hpp"
 #include "singlestrip/mesh.hpp"
-#include "singlestrip/strip.hpp"
-#include "singlestrip/validate.hpp"
+#include "singlestrip/pipeline.hpp"
 
 namespace fs = std::filesystem;
 using namespace singlestrip;
@@ -79,14 +77,15 @@ void make(const Picture& p, const fs::path& meshes, const fs::path& out) {
     const fs::path work = out / "render_work";
     fs::create_directories(work);
     const std::string in = fs::path(p.mesh).is_absolute() ? p.mesh : (meshes / p.mesh).string();
-    TriangleSoup soup = prepare_soup(read_mesh_file(in), {}, in);
-    StripOptions opt;
+    TriangleSoup soup = read_input(in);
+    PipelineOptions opt;
+    opt.name = in;
+    opt.cycles = p.cycles;
     render::RenderArgs args;
     if (!p.constraints_file.empty()) {
-        opt.constraint_edges = read_constraints(p.constraints_file, static_cast<uint32_t>(soup.points.size()));
-        opt.source = args.source = p.source;
-        opt.target = args.target = p.target;
-        args.constraints = p.constraints_file;
+        opt.constraints_file = args.constraints = p.constraints_file;
+        opt.strip.source = args.source = p.source;
+        opt.strip.target = args.target = p.target;
     } else if (p.constrained) {
         // A constraint polyline across the model and source/target at its two far ends.
         const uint32_t a = extreme(soup, 0, -1), b = extreme(soup, 0, 1);
@@ -96,24 +95,19 @@ void make(const Picture& p, const fs::path& meshes, const fs::path& out) {
         std::ofstream c(cfile);
         for (size_t i = 0; i < path.size(); ++i) c << path[i] << (i + 1 < path.size() ? ' ' : '\n');
         c.close();
-        opt.constraint_edges = read_constraints(cfile.string(), static_cast<uint32_t>(soup.points.size()));
-        opt.source = a;
-        opt.target = b;
-        args.constraints = cfile.string();
-        args.source = a;
-        args.target = b;
+        opt.constraints_file = args.constraints = cfile.string();
+        opt.strip.source = args.source = a;
+        opt.strip.target = args.target = b;
         std::printf("%s: constraints %s, --source %u --target %u\n", p.name.c_str(), cfile.c_str(), a, b);
     }
-    const StripResult r = build_strip(Mesh::from_soup(soup), opt);
-    const StripArrays arr = strip_arrays(r);
+    const PipelineResult r = stripify(std::move(soup), opt);
     const fs::path ply = work / (p.name + ".ply");
-    write_strip_mesh(ply.string(), arr.points, arr.faces, arr.parent);
-    if (p.cycles) {
-        const Cycles cyc = compute_fundamental_cycles(r);
+    write_strip_mesh(ply.string(), r.arrays.points, r.arrays.faces, r.arrays.parent);
+    if (r.cycles) {
         const fs::path cj = work / (p.name + ".cycles.json");
-        write_cycles_json(cj.string(), cyc);
+        write_cycles_json(cj.string(), *r.cycles);
         args.cycles = cj.string();
-        std::printf("%s: %zu cycles\n", p.name.c_str(), cyc.cycles.size());
+        std::printf("%s: %zu cycles\n", p.name.c_str(), r.cycles->cycles.size());
     }
     args.input = ply.string();
     args.output = (out / ("render_" + p.name + ".png")).string();
@@ -121,8 +115,9 @@ void make(const Picture& p, const fs::path& meshes, const fs::path& out) {
     args.style.width = 900;
     args.style.height = 700;
     render::run_render_command(args);
-    std::printf("%s: %u -> %u triangles, %u splits -> %s\n", p.name.c_str(), r.stats.input_triangles, r.stats.output_triangles,
-                r.stats.splits, args.output.c_str());
+    const StripStats& st = r.strip.stats;
+    std::printf("%s: %s, %u -> %u triangles, %u splits -> %s\n", p.name.c_str(), engine_name(st.engine), st.input_triangles,
+                st.output_triangles, st.splits, args.output.c_str());
 }
 
 }  // namespace
@@ -138,8 +133,14 @@ int main(int argc, char** argv) {
         {"eight.off", "eight", {90, 60, false}, true, false, {}, {}, {}},
         {"elephant.off", "constrained", {270, 15, true}, false, true, {}, {}, {}},
         // README worked example: examples/room with its walls, --source 0 --target 650.
-        {std::string(SINGLESTRIP_SOURCE_DIR) + "/examples/room/room.off", "room", {-90, 90, true}, false, false,
-         std::string(SINGLESTRIP_SOURCE_DIR) + "/examples/room/walls.txt", 0u, 650u},
+        {std::string(SINGLESTRIP_SOURCE_DIR) + "/examples/room/room.off",
+         "room",
+         {-90, 90, true},
+         false,
+         false,
+         std::string(SINGLESTRIP_SOURCE_DIR) + "/examples/room/walls.txt",
+         0u,
+         650u},
     };
     int rc = 0;
     for (const Picture& p : pictures) {

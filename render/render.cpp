@@ -18,6 +18,7 @@
 #include "singlestrip/encode.hpp"
 #include "singlestrip/errors.hpp"
 #include "singlestrip/io.hpp"
+#include "singlestrip/pipeline.hpp"
 #include "singlestrip/strip.hpp"
 #include "singlestrip/verify.hpp"
 
@@ -26,11 +27,15 @@ namespace {
 
 using Vec = std::array<double, 3>;
 
-Vec sub(const Vec& a, const Vec& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+Vec sub(const Vec& a, const Vec& b) {
+    return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+}
 Vec cross(const Vec& a, const Vec& b) {
     return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
-double dot(const Vec& a, const Vec& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+double dot(const Vec& a, const Vec& b) {
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
 Vec normalized(const Vec& a) {
     const double l = std::sqrt(dot(a, a));
     return l > 0 ? Vec{a[0] / l, a[1] / l, a[2] / l} : Vec{0, 0, 0};
@@ -122,21 +127,23 @@ void load_camera(const Camera& c, const std::vector<Point3>& pts, int w, int h) 
     // Grow the smaller extent to the picture's aspect ratio, keeping the model centred.
     double cx = (l + r) / 2, cy = (b + t) / 2, hw = (r - l) / 2 * 1.05, hh = (t - b) / 2 * 1.05;
     if (hw <= 0 && hh <= 0) hw = hh = 1e-3;
-    if (hw / hh > aspect) hh = hw / aspect;
-    else hw = hh * aspect;
+    if (hw / hh > aspect)
+        hh = hw / aspect;
+    else
+        hw = hh * aspect;
     glMatrixMode(GL_PROJECTION);
     glLoadIdentity();
     glFrustum((cx - hw) * near, (cx + hw) * near, (cy - hh) * near, (cy + hh) * near, near, far);
-    const double m[16] = {s[0], u[0], -f[0], 0, s[1], u[1], -f[1], 0, s[2], u[2], -f[2], 0,
-                          -dot(s, c.eye), -dot(u, c.eye), dot(f, c.eye), 1};
+    const double m[16] = {s[0], u[0], -f[0], 0, s[1],           u[1],           -f[1],         0,
+                          s[2], u[2], -f[2], 0, -dot(s, c.eye), -dot(u, c.eye), dot(f, c.eye), 1};
     glMatrixMode(GL_MODELVIEW);
     glLoadMatrixd(m);
 }
 
 /// Colour along the strip: blue -> cyan -> green -> yellow -> red.
 std::array<float, 3> ramp(double t) {
-    static const float stops[5][3] = {{0.19f, 0.30f, 0.78f}, {0.25f, 0.70f, 0.90f}, {0.38f, 0.80f, 0.35f},
-                                      {0.98f, 0.80f, 0.25f}, {0.85f, 0.22f, 0.18f}};
+    static const float stops[5][3] = {
+        {0.19f, 0.30f, 0.78f}, {0.25f, 0.70f, 0.90f}, {0.38f, 0.80f, 0.35f}, {0.98f, 0.80f, 0.25f}, {0.85f, 0.22f, 0.18f}};
     t = std::clamp(t, 0.0, 1.0) * 4.0;
     const int i = std::min(3, static_cast<int>(t));
     const float a = static_cast<float>(t - i);
@@ -158,7 +165,7 @@ void check_indices(const std::vector<Point3>& points, const std::vector<uint32_t
 /// Draws the overlays; `alpha` < 1 for the faint "hidden" pass.
 void draw_overlays(const Overlays& o, const Style& st, int scale, float alpha) {
     static const float palette[6][3] = {{0.85f, 0.0f, 0.75f}, {0.05f, 0.05f, 0.05f}, {1.0f, 0.55f, 0.0f},
-                                        {0.45f, 0.0f, 0.85f}, {0.0f, 0.55f, 0.55f}, {0.6f, 0.3f, 0.0f}};
+                                        {0.45f, 0.0f, 0.85f}, {0.0f, 0.55f, 0.55f},  {0.6f, 0.3f, 0.0f}};
     glLineWidth(st.line_width * static_cast<float>(scale));
     for (size_t c = 0; c < o.closed_polylines.size(); ++c) {
         const float* col = palette[c % 6];
@@ -191,8 +198,8 @@ void draw_overlays(const Overlays& o, const Style& st, int scale, float alpha) {
 
 }  // namespace
 
-Image render_strip(const std::vector<Point3>& points, const std::vector<uint32_t>& s, const Overlays& overlays,
-                   const View& view, const Style& style) {
+Image render_strip(const std::vector<Point3>& points, const std::vector<uint32_t>& s, const Overlays& overlays, const View& view,
+                   const Style& style) {
     if (style.width <= 0 || style.height <= 0 || style.width > 8192 || style.height > 8192)
         throw RequestError("render: picture size must be between 1 and 8192 pixels");
     check_indices(points, s);
@@ -267,8 +274,9 @@ Image render_strip(const std::vector<Point3>& points, const std::vector<uint32_t
                 unsigned sum = 0;
                 for (int dy = 0; dy < kScale; ++dy)
                     for (int dx = 0; dx < kScale; ++dx)
-                        sum += big[(static_cast<size_t>(y * kScale + dy) * static_cast<size_t>(W) + static_cast<size_t>(x * kScale + dx)) * 4 +
-                                   static_cast<size_t>(ch)];
+                        sum +=
+                            big[(static_cast<size_t>(y * kScale + dy) * static_cast<size_t>(W) + static_cast<size_t>(x * kScale + dx)) * 4 +
+                                static_cast<size_t>(ch)];
                 img.rgba[(static_cast<size_t>(y) * static_cast<size_t>(img.width) + static_cast<size_t>(x)) * 4 + static_cast<size_t>(ch)] =
                     static_cast<uint8_t>((sum + kScale * kScale / 2) / (kScale * kScale));
             }
@@ -276,9 +284,8 @@ Image render_strip(const std::vector<Point3>& points, const std::vector<uint32_t
     return img;
 }
 
-std::vector<uint8_t> render_coverage(const std::vector<Point3>& points, const std::vector<uint32_t>& indices,
-                                     Primitive primitive, const std::vector<Point3>& frame_points, const View& view,
-                                     int width, int height) {
+std::vector<uint8_t> render_coverage(const std::vector<Point3>& points, const std::vector<uint32_t>& indices, Primitive primitive,
+                                     const std::vector<Point3>& frame_points, const View& view, int width, int height) {
     if (width <= 0 || height <= 0 || width > 8192 || height > 8192)
         throw RequestError("render: picture size must be between 1 and 8192 pixels");
     check_indices(points, indices);
@@ -336,9 +343,16 @@ Image read_png(const std::string& path) {
     return img;
 }
 
-int run_render_command(const RenderArgs& a) {
-    const std::string out = lower(a.output);
-    if (out.size() < 4 || out.substr(out.size() - 4) != ".png") throw RequestError(a.output + ": the picture must be a .png file");
+namespace {
+
+/// What the CLI draws: a strip in order, its GL indices and the cycles (faces in strip order).
+struct Drawable {
+    StripArrays arrays;
+    std::vector<uint32_t> indices;
+    std::vector<std::vector<uint32_t>> cycles;
+};
+
+Drawable read_result(const RenderArgs& a) {
     OutputMesh m = read_output_mesh(a.input);
     if (m.faces.empty()) throw InputError(a.input + ": no faces to render");
     // encode_triangle_strip() treats a broken sequence as a bug; for a user file it is bad input.
@@ -350,35 +364,66 @@ int run_render_command(const RenderArgs& a) {
             throw InputError(a.input + ": faces " + std::to_string(i) + " and " + std::to_string(i + 1) +
                              " share no edge: the file is not one strip (render a result of `singlestrip strip`)");
     }
-    const std::vector<uint32_t> indices = encode_triangle_strip(m.faces);
+    Drawable d;
+    d.indices = encode_triangle_strip(m.faces);
+    d.arrays.points = std::move(m.points);
+    d.arrays.faces = std::move(m.faces);
+    d.arrays.parent = std::move(m.parent);
+    if (a.cycles) d.cycles = read_cycles_file(*a.cycles);
+    return d;
+}
 
+/// `--engine`: the input is a mesh, stripped here with the constraints and source/target.
+Drawable strip_input(const RenderArgs& a) {
+    PipelineOptions o;
+    o.strip.engine = *a.engine;
+    o.strip.source = a.source;
+    o.strip.target = a.target;
+    o.constraints_file = a.constraints;
+    o.cycles = a.with_cycles;
+    o.name = a.input;
+    PipelineResult r = stripify(read_input(a.input), o);
+    Drawable d;
+    d.arrays = std::move(r.arrays);
+    d.indices = std::move(r.indices);
+    if (r.cycles) d.cycles = std::move(r.cycles->cycles);
+    return d;
+}
+
+Overlays overlays_of(const RenderArgs& a, const Drawable& d) {
     Overlays ov;
-    const auto nv = static_cast<uint32_t>(m.points.size());
-    if (a.cycles) {
-        const std::vector<std::vector<uint32_t>> cycles = read_cycles_file(*a.cycles);
-        StripArrays arr;
-        arr.points = m.points;
-        arr.faces = m.faces;
-        arr.parent = m.parent;
-        for (size_t c = 0; c < cycles.size(); ++c) {
-            for (uint32_t f : cycles[c])
-                if (f >= m.faces.size())
-                    throw InputError(*a.cycles + ": cycle " + std::to_string(c) + " names face " + std::to_string(f) + " but " +
-                                     a.input + " has " + std::to_string(m.faces.size()) + " faces");
-            ov.closed_polylines.push_back(cycle_polyline(arr, cycles[c]));
-        }
+    const auto& pts = d.arrays.points;
+    const auto nv = static_cast<uint32_t>(pts.size());
+    for (size_t c = 0; c < d.cycles.size(); ++c) {
+        for (uint32_t f : d.cycles[c])
+            if (f >= d.arrays.faces.size())
+                throw InputError(a.cycles.value_or("cycles") + ": cycle " + std::to_string(c) + " names face " + std::to_string(f) +
+                                 " but " + a.input + " has " + std::to_string(d.arrays.faces.size()) + " faces");
+        ov.closed_polylines.push_back(cycle_polyline(d.arrays, d.cycles[c]));
     }
     if (a.constraints)
-        for (const auto& [u, v] : read_constraints(*a.constraints, nv)) ov.segments.emplace_back(m.points[u], m.points[v]);
+        for (const auto& [u, v] : read_constraints(*a.constraints, nv)) ov.segments.emplace_back(pts[u], pts[v]);
     auto vertex = [&](uint32_t v, const char* what) {
         if (v >= nv)
             throw RequestError(std::string("--") + what + " " + std::to_string(v) + " is out of range (" + a.input + " has " +
                                std::to_string(nv) + " vertices)");
-        return m.points[v];
+        return pts[v];
     };
     if (a.source) ov.source = vertex(*a.source, "source");
     if (a.target) ov.target = vertex(*a.target, "target");
-    write_png(a.output, render_strip(m.points, indices, ov, a.view, a.style));
+    return ov;
+}
+
+}  // namespace
+
+int run_render_command(const RenderArgs& a) {
+    const std::string out = lower(a.output);
+    if (out.size() < 4 || out.substr(out.size() - 4) != ".png") throw RequestError(a.output + ": the picture must be a .png file");
+    if (a.engine && a.cycles) throw RequestError("--cycles names faces of a result file; with --engine use --with-cycles");
+    if (!a.engine && a.with_cycles) throw RequestError("--with-cycles needs --engine (the input is then stripped first)");
+    const Drawable d = a.engine ? strip_input(a) : read_result(a);
+    const Overlays ov = overlays_of(a, d);
+    write_png(a.output, render_strip(d.arrays.points, d.indices, ov, a.view, a.style));
     return kExitOk;
 }
 

@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "singlestrip/soup.hpp"
+#include "singlestrip/strip.hpp"
 
 namespace singlestrip::render {
 
@@ -54,8 +55,8 @@ struct Style {
 
 /// What to draw on top of the strip.
 struct Overlays {
-    std::vector<std::vector<Point3>> closed_polylines;   ///< cycles (each closed implicitly)
-    std::vector<std::pair<Point3, Point3>> segments;     ///< constraint edges
+    std::vector<std::vector<Point3>> closed_polylines;  ///< cycles (each closed implicitly)
+    std::vector<std::pair<Point3, Point3>> segments;    ///< constraint edges
     std::optional<Point3> source;
     std::optional<Point3> target;
 };
@@ -63,8 +64,8 @@ struct Overlays {
 /// Renders the strip. `strip_indices` is a GL_TRIANGLE_STRIP index sequence into `points`.
 /// \throw RequestError if an index is out of range or the sizes are not positive;
 ///        Error (InternalError) if no OSMesa context can be created.
-Image render_strip(const std::vector<Point3>& points, const std::vector<uint32_t>& strip_indices,
-                   const Overlays& overlays, const View& view = {}, const Style& style = {});
+Image render_strip(const std::vector<Point3>& points, const std::vector<uint32_t>& strip_indices, const Overlays& overlays,
+                   const View& view = {}, const Style& style = {});
 
 /// Primitive type for render_coverage().
 enum class Primitive { Triangles, TriangleStrip };
@@ -75,9 +76,8 @@ enum class Primitive { Triangles, TriangleStrip };
 /// holds the number of front-facing layers covering it (saturating at 255). The camera is
 /// computed from `frame_points` (so two meshes with the same bounding box get the same camera).
 /// Returns width*height counts, rows top to bottom.
-std::vector<uint8_t> render_coverage(const std::vector<Point3>& points, const std::vector<uint32_t>& indices,
-                                     Primitive primitive, const std::vector<Point3>& frame_points,
-                                     const View& view, int width, int height);
+std::vector<uint8_t> render_coverage(const std::vector<Point3>& points, const std::vector<uint32_t>& indices, Primitive primitive,
+                                     const std::vector<Point3>& frame_points, const View& view, int width, int height);
 
 /// Writes `img` as an 8-bit RGBA PNG, atomically. \throw OutputError.
 void write_png(const std::string& path, const Image& img);
@@ -87,19 +87,25 @@ Image read_png(const std::string& path);
 
 /// Arguments of `singlestrip render`.
 struct RenderArgs {
-    std::string input;                        ///< RESULT.ply (or .obj/.off) written by `strip`
-    std::string output;                       ///< picture.png
-    std::optional<std::string> cycles;        ///< cycles JSON ({"cycles": [[face, ...], ...]})
-    std::optional<std::string> constraints;   ///< constraint polylines file
-    std::optional<uint32_t> source, target;   ///< vertex ids to mark
+    std::string input;                       ///< RESULT.ply (or .obj/.off) written by `strip`
+    std::string output;                      ///< picture.png
+    std::optional<std::string> cycles;       ///< cycles JSON ({"cycles": [[face, ...], ...]})
+    std::optional<std::string> constraints;  ///< constraint polylines file
+    std::optional<uint32_t> source, target;  ///< vertex ids to mark
+    /// Set: `input` is any mesh (or builtin:genus2), stripped first with this engine
+    /// (pipeline.hpp), `constraints`, `source` and `target` being the strip's request too.
+    std::optional<StripEngine> engine;
+    bool with_cycles = false;  ///< with `engine`: draw the computed cycles
     View view;
     Style style;
 };
 
-/// `singlestrip render`: reads the result (read_output_mesh), re-encodes its faces with
-/// encode_triangle_strip, renders, writes the PNG. Returns kExitOk.
-/// \throw InputError (unreadable files), RequestError (vertex out of range, output not .png),
-///        OutputError, InternalError — for the CLI's usual mapping to exit codes.
+/// `singlestrip render`: reads the result (read_output_mesh) and re-encodes its faces with
+/// encode_triangle_strip, or with `engine` strips the input mesh (stripify()); renders, writes
+/// the PNG. Returns kExitOk.
+/// \throw InputError (unreadable files, an invalid mesh), RequestError (vertex out of range,
+///        output not .png, --cycles with an engine, an impossible strip request), OutputError,
+///        InternalError — for the CLI's usual mapping to exit codes.
 int run_render_command(const RenderArgs& args);
 
 }  // namespace singlestrip::render

@@ -1,7 +1,6 @@
 // Batch mode: a small thread pool over input files; see batch.hpp.
 #include "singlestrip/batch.hpp"
 
-#include <nlohmann/json.hpp>
 #include <unistd.h>
 
 #include <algorithm>
@@ -12,28 +11,25 @@
 #include <map>
 #include <mutex>
 #include <new>
+#include <optional>
 #include <ostream>
 #include <sstream>
 #include <thread>
 
 #include "singlestrip/cycles.hpp"
-#include "singlestrip/encode.hpp"
 #include "singlestrip/errors.hpp"
-#include "singlestrip/generators.hpp"
 #include "singlestrip/gltf.hpp"
 #include "singlestrip/io.hpp"
-#include "singlestrip/mesh.hpp"
-#include "singlestrip/strip.hpp"
-#include "singlestrip/validate.hpp"
+#include "singlestrip/pipeline.hpp"
+#include "singlestrip/report.hpp"
 
 namespace singlestrip {
 namespace {
 
 namespace fs = std::filesystem;
-using json = nlohmann::json;
 
 std::string stem_of(const std::string& input) {
-    if (input.rfind("builtin:", 0) == 0) {
+    if (is_builtin_input(input)) {
         std::string s = input;
         std::replace(s.begin(), s.end(), ':', '_');
         return s;
@@ -42,67 +38,96 @@ std::string stem_of(const std::string& input) {
     return s.empty() ? std::string("mesh") : s;
 }
 
-TriangleSoup load(const std::string& input, const std::string& input_format) {
-    if (input.rfind("builtin:", 0) == 0) {
-        if (input != "builtin:genus2") throw RequestError("unknown built-in model '" + input + "' (available: builtin:genus2)");
-        return make_builtin_model();
-    }
-    ReadOptions read;
-    read.format = input_format;
-    return read_mesh_file(input, read);
+PipelineOptions pipeline_options(const BatchOptions& o, const std::string& input) {
+    PipelineOptions p;
+    p.strip.engine = o.engine;
+    p.strip.greedy = o.greedy;
+    p.strip.seed_face = o.seed_face;
+    p.orient = o.orient;
+    p.cycles = o.cycles;
+    p.name = input;
+    return p;
 }
 
-/// Strips one file; fills `item` and writes its outputs. Throws on failure (caught by caller).
-void process(BatchItem& item, const BatchOptions& o, const std::string& base, json& report) {
-    std::vector<std::string> written;  // removed again if a later step fails
+/// Writes the result of one file (and its optional files), removing what it wrote if a later
+/// write fails.
+void write_outputs(const BatchItem& item, const BatchOptions& o, const std::string& base, const PipelineResult& r) {
+    std::vector<std::string> written;
     try {
-        TriangleSoup soup = prepare_soup(load(item.input, o.input_format), PrepareOptions{o.orient}, item.input);
-        StripOptions opt;
-        opt.greedy = o.greedy;
-        opt.seed_face = o.seed_face;
-        StripResult result = build_strip(Mesh::from_soup(soup), opt);
-        StripArrays arrays = strip_arrays(result);
-        const std::vector<uint32_t> indices = encode_triangle_strip(arrays.faces);
         if (is_gltf_path(item.output))
-            write_gltf_strip(item.output, arrays, indices);
+            write_gltf_strip(item.output, r.arrays, r.indices);
         else
-            write_strip_mesh(item.output, arrays.points, arrays.faces, arrays.parent);
+            write_strip_mesh(item.output, r.arrays.points, r.arrays.faces, r.arrays.parent);
         written.push_back(item.output);
         if (o.write_indices) {
-            write_indices(base + ".indices.txt", indices);
+            write_indices(base + ".indices.txt", r.indices);
             written.push_back(base + ".indices.txt");
         }
-        std::size_t num_cycles = 0;
-        if (o.cycles) {
-            const Cycles c = compute_fundamental_cycles(result);
-            num_cycles = c.cycles.size();
-            write_cycles_json(base + ".cycles.json", c);
+        if (r.cycles) {
+            write_cycles_json(base + ".cycles.json", *r.cycles);
             written.push_back(base + ".cycles.json");
         }
-        const auto& st = result.stats;
-        item.input_triangles = st.input_triangles;
-        item.output_triangles = st.output_triangles;
-        item.splits = st.splits;
-        item.strip_indices = indices.size();
-        const double in_tris = st.input_triangles ? static_cast<double>(st.input_triangles) : 1.0;
-        report["output_triangles"] = st.output_triangles;
-        report["input_triangles"] = st.input_triangles;
-        report["splits"] = st.splits;
-        report["swaps"] = st.swaps;
-        report["strip_indices"] = indices.size();
-        report["genus"] = st.genus;
-        report["boundary_loops"] = st.boundary_loops;
-        report["fundamental_triangles"] = st.fundamental_triangles;
-        report["deferred_regions"] = st.deferred_regions;
-        report["indices_per_triangle"] = static_cast<double>(indices.size()) / in_tris;
-        report["extra_percent"] = 100.0 * (static_cast<double>(st.output_triangles) - static_cast<double>(st.input_triangles)) / in_tris;
-        if (o.cycles) report["cycles"] = num_cycles;
     } catch (...) {
         for (const auto& p : written) {
             std::error_code ec;
             fs::remove(p, ec);
         }
         throw;
+    }
+}
+
+/// Strips one file, writes its outputs and fills the item's counts. Throws on failure.
+PipelineResult process(BatchItem& item, const BatchOptions& o, const std::string& base) {
+    ReadOptions read;
+    read.format = o.input_format;
+    PipelineResult r = stripify(read_input(item.input, read), pipeline_options(o, item.input));
+    write_outputs(item, o, base, r);
+    const auto& st = r.strip.stats;
+    item.input_triangles = st.input_triangles;
+    item.output_triangles = st.output_triangles;
+    item.splits = st.splits;
+    item.strip_indices = r.indices.size();
+    return r;
+}
+
+/// Runs one file and records its outcome in `item`; the result is kept for the report.
+std::optional<PipelineResult> run_one(BatchItem& item, const BatchOptions& o, const std::string& base) {
+    std::optional<PipelineResult> result;
+    try {
+        result = process(item, o, base);
+        item.ok = true;
+    } catch (const Error& e) {
+        item.error = e.what();
+        item.exit_code = e.exit_code();
+    } catch (const std::bad_alloc&) {
+        item.error = "out of memory";
+        item.exit_code = kExitInternal;
+    } catch (const std::exception& e) {
+        item.error = std::string("internal: ") + e.what();
+        item.exit_code = kExitInternal;
+    }
+    return result;
+}
+
+/// Writes <stem>.report.json; a file whose report cannot be written counts as failed.
+void write_report(BatchItem& item, const BatchOptions& o, const PipelineResult* result) {
+    const PipelineOptions requested = pipeline_options(o, item.input);
+    ReportInput rep;
+    rep.input = item.input;
+    rep.output = item.output;
+    rep.options = result ? nullptr : &requested;
+    rep.result = result;
+    rep.outcome = RunOutcome{item.ok, item.exit_code, item.error, item.seconds};
+    try {
+        write_text_atomic(item.report, report_json(rep));
+    } catch (const Error& e) {
+        if (item.ok) {
+            item.ok = false;
+            item.error = e.what();
+            item.exit_code = e.exit_code();
+            std::error_code ec;
+            fs::remove(item.output, ec);
+        }
     }
 }
 
@@ -155,40 +180,10 @@ BatchResult run_batch_files(const std::vector<std::string>& files, const BatchOp
         for (size_t i = next++; i < files.size(); i = next++) {
             BatchItem& item = res.items[i];
             const auto t0 = std::chrono::steady_clock::now();
-            json report;
-            report["input"] = item.input;
-            report["output"] = item.output;
-            report["options"] = {{"greedy", o.greedy}, {"orient", o.orient}};
-            if (o.seed_face) report["options"]["seed_face"] = *o.seed_face;
-            try {
-                process(item, o, bases[i], report);
-                item.ok = true;
-            } catch (const Error& e) {
-                item.error = e.what();
-                item.exit_code = e.exit_code();
-            } catch (const std::bad_alloc&) {
-                item.error = "out of memory";
-                item.exit_code = kExitInternal;
-            } catch (const std::exception& e) {
-                item.error = std::string("internal: ") + e.what();
-                item.exit_code = kExitInternal;
-            }
+            std::optional<PipelineResult> result = run_one(item, o, bases[i]);
             item.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-            report["ok"] = item.ok;
-            report["exit_code"] = item.exit_code;
-            if (!item.ok) report["error"] = item.error;
-            report["seconds"] = item.seconds;
-            try {
-                write_text_atomic(item.report, report.dump(2) + "\n");
-            } catch (const Error& e) {
-                if (item.ok) {
-                    item.ok = false;
-                    item.error = e.what();
-                    item.exit_code = e.exit_code();
-                    std::error_code ec;
-                    fs::remove(item.output, ec);
-                }
-            }
+            write_report(item, o, result ? &*result : nullptr);
+            result.reset();
             std::lock_guard<std::mutex> lock(mu);
             ++done;
             failed += item.ok ? 0 : 1;
@@ -220,7 +215,8 @@ std::string batch_summary_table(const BatchResult& r) {
     for (const auto& it : r.items) {
         std::string name = it.input.size() > w ? "..." + it.input.substr(it.input.size() - (w - 3)) : it.input;
         if (it.ok) {
-            const double extra = it.input_triangles ? 100.0 * (static_cast<double>(it.output_triangles) - it.input_triangles) / it.input_triangles : 0.0;
+            const double extra =
+                it.input_triangles ? 100.0 * (static_cast<double>(it.output_triangles) - it.input_triangles) / it.input_triangles : 0.0;
             std::snprintf(line, sizeof line, "%-*s  %-6s %10u %10u %8u %+7.1f%% %10zu %8.3f\n", static_cast<int>(w), name.c_str(), "ok",
                           it.input_triangles, it.output_triangles, it.splits, extra, it.strip_indices, it.seconds);
             tin += it.input_triangles, tout += it.output_triangles, tsplit += it.splits, tidx += it.strip_indices;
@@ -233,7 +229,8 @@ std::string batch_summary_table(const BatchResult& r) {
     }
     std::snprintf(line, sizeof line, "%zu file(s): %zu ok, %zu failed; %llu -> %llu triangles, %llu splits, %llu indices, %.3f s of work\n",
                   r.items.size(), r.items.size() - r.failed, r.failed, static_cast<unsigned long long>(tin),
-                  static_cast<unsigned long long>(tout), static_cast<unsigned long long>(tsplit), static_cast<unsigned long long>(tidx), tsec);
+                  static_cast<unsigned long long>(tout), static_cast<unsigned long long>(tsplit), static_cast<unsigned long long>(tidx),
+                  tsec);
     o << line;
     for (const auto& it : r.items)
         if (!it.ok) o << "FAILED " << it.input << " (exit " << it.exit_code << "): " << it.error << '\n';

@@ -1,12 +1,618 @@
-// singlestrip — matching engine (work in progress: delegates to the growth builder).
+// singlestrip — matching engine: one strip from a 2-factor of the dual graph.
+//
+// Gopi & Eppstein, "Single-Strip Triangulation of Manifolds with Arbitrary Topology" (2004), and
+// Diaz-Gutierrez, Eppstein & Gopi, "Single Triangle Strip and Loop on Manifolds with Boundaries"
+// (2006). Every face keeps one passable edge the strip does not cross (its *matched* edge, paired
+// with the neighbour's), so the crossed (*used*) edges form loops and paths; loops are joined by one
+// midpoint split each, path ends for free where they touch. Design, the argument that it ends in
+// one strip, and what it costs: docs/algorithm.md, "The matching engine".
+#include <boost/graph/adjacency_list.hpp>
+#include <boost/graph/max_cardinality_matching.hpp>
+
+#include <algorithm>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "singlestrip/errors.hpp"
 #include "singlestrip/strip.hpp"
+#include "strip_controls.hpp"
 
 namespace singlestrip {
 
-StripResult build_strip_matching(Mesh mesh, const StripOptions& options) {
-    StripResult r = build_strip_growth(std::move(mesh), options);
+namespace {
+
+/// The virtual face that links the pinned faces (source and target) into one loop.
+constexpr uint32_t kVirtual = kNone - 1;
+
+class MatchingBuilder {
+public:
+    MatchingBuilder(Mesh mesh, const StripOptions& options) : mesh_(std::move(mesh)), opt_(options) {}
+    StripResult run();
+
+private:
+    Mesh mesh_;
+    const StripOptions& opt_;
+    // Per half-edge, symmetric across twins (a half-edge and its twin always agree).
+    std::vector<uint8_t> blocked_;  ///< constraint edge: never crossed
+    std::vector<uint8_t> matched_;  ///< passable edge not crossed, paired by the matching
+    std::vector<uint8_t> used_;     ///< crossed by the strip (an edge of the loops and paths)
+    // Per face.
+    std::vector<uint8_t> vlink_;  ///< linked to the virtual face (a pinned end)
+    std::vector<uint8_t> quota_;  ///< matched edges still wanted
+    std::vector<uint32_t> sid_;   ///< structure (loop or path) id, through uf_
+    // Per structure id.
+    std::vector<uint32_t> uf_;           ///< union-find parent
+    std::vector<uint8_t> cycle_;         ///< at a root: the structure is a loop (no free end)
+    std::vector<uint8_t> pinned_;        ///< at a root: holds the virtual face
+    uint32_t pins_[2] = {kNone, kNone};  ///< source face (or seed) and target face
+    uint32_t num_pins_ = 0;
+    StripStats stats_;
+    // Augmenting search, per face: the outer face it was reached from and the two edges used.
+    std::vector<uint32_t> aug_prev_, aug_matched_, aug_unmatched_, aug_queue_;
+
+    [[nodiscard]] bool passable(uint32_t h) const { return !mesh_.is_boundary(h) && !blocked_[h]; }
+    [[nodiscard]] uint32_t degree(uint32_t f) const { return passable(3 * f) + passable(3 * f + 1) + passable(3 * f + 2); }
+    /// Links of f in the loops-and-paths graph, the virtual face included.
+    [[nodiscard]] uint32_t hdeg(uint32_t f) const { return used_[3 * f] + used_[3 * f + 1] + used_[3 * f + 2] + vlink_[f]; }
+    void set_pair(std::vector<uint8_t>& a, uint32_t h, uint8_t value) {
+        a[h] = value;
+        a[mesh_.twin(h)] = value;
+    }
+    uint32_t find(uint32_t s) {
+        while (uf_[s] != s) s = uf_[s] = uf_[uf_[s]];
+        return s;
+    }
+
+    void choose_pins();
+    SplitResult split(uint32_t h);
+    void split_ears();
+    void set_quotas();
+    void match_patterned();
+    bool augment_from(uint32_t u, std::vector<uint32_t>& stamp, uint32_t mark, size_t budget);
+    void settle_leftovers();
+    bool repair_in_balls(std::vector<uint32_t>& short_faces, size_t ball);
+    void label_structures();
+    void merge_all();
+    void reduce_loops();
+    bool flip_ring(uint32_t v, std::vector<uint32_t>& ring);
+    bool try_merge(uint32_t h, bool allow_split);
+    void join(uint32_t h, uint32_t a, uint32_t b, bool cycle, bool pinned);
+    void rotate_into(uint32_t h, uint32_t a, uint32_t b);
+    void merge_by_split(uint32_t h, uint32_t a, uint32_t b);
+    bool single_strip_ready();
+    std::vector<uint32_t> walk() const;
+    StripResult finish(std::vector<uint32_t> order);
+    StripResult fallback();
+};
+
+// Pinned faces: the strip starts at pins_[0] and ends at pins_[1] (either may be absent).
+void MatchingBuilder::choose_pins() {
+    const uint32_t nf = mesh_.num_faces();
+    uint32_t first = kNone, last = kNone;
+    if (opt_.seed_face)
+        first = *opt_.seed_face;
+    else if (opt_.source)
+        first = face_at_vertex(mesh_, blocked_, *opt_.source, kNone);
+    if (opt_.target && nf > 1) {
+        last = face_at_vertex(mesh_, blocked_, *opt_.target, first);
+        if (last == first) {
+            // The target's only face is the first face: split it across the edge opposite the
+            // target so that both children touch it; start in one, end in the other.
+            uint32_t h = 3 * first;
+            while (mesh_.from(h) == *opt_.target || mesh_.to(h) == *opt_.target) ++h;
+            if (!passable(h))
+                throw RequestError("cannot end at target vertex " + std::to_string(*opt_.target) +
+                                   ": its only face is the first face of the strip and cannot be split");
+            const SplitResult sr = split(h);
+            const bool a_first = !opt_.source || face_has_vertex(mesh_, sr.f_a, *opt_.source);
+            first = a_first ? sr.f_a : sr.f_b;
+            last = a_first ? sr.f_b : sr.f_a;
+        }
+    }
+    if (first != kNone) pins_[num_pins_++] = first;
+    if (last != kNone) pins_[num_pins_++] = last;
+    if (!opt_.seed_face && !opt_.source && last != kNone) std::swap(pins_[0], pins_[1]);  // target only
+}
+
+// Splits the interior edge of h; per-half-edge flags follow the two half-edges that move, the
+// four new inner edges start clear. Pins keep their vertex.
+SplitResult MatchingBuilder::split(uint32_t h) {
+    const uint32_t t = mesh_.twin(h), hn = Mesh::next(h), tn = Mesh::next(t);
+    const uint32_t pin_vertex[2] = {opt_.source ? *opt_.source : kNone, opt_.target ? *opt_.target : kNone};
+    const SplitResult sr = mesh_.split_edge(h);
+    ++stats_.splits;
+    const uint32_t fb0 = 3 * sr.f_b, ga0 = 3 * sr.g_a;
+    for (auto* a : {&blocked_, &matched_, &used_}) {
+        a->resize(mesh_.num_halfedges(), 0);
+        (*a)[fb0 + 1] = (*a)[hn];
+        (*a)[ga0 + 1] = (*a)[tn];
+        for (uint32_t x : {h, hn, t, tn, fb0, fb0 + 2, ga0, ga0 + 2}) (*a)[x] = 0;
+    }
+    vlink_.resize(mesh_.num_faces(), 0);
+    quota_.resize(mesh_.num_faces(), 0);
+    if (!sid_.empty()) sid_.resize(mesh_.num_faces(), sid_[sr.f_a]), sid_[sr.g_a] = sid_[sr.g_b];
+    for (uint32_t i = 0; i < num_pins_; ++i) {
+        const uint32_t v = (i == 0 && (opt_.seed_face || opt_.source)) ? pin_vertex[0] : pin_vertex[1];
+        if (v == kNone) continue;
+        if (pins_[i] == sr.f_a && !face_has_vertex(mesh_, sr.f_a, v))
+            pins_[i] = sr.f_b;
+        else if (pins_[i] == sr.g_b && !face_has_vertex(mesh_, sr.g_b, v))
+            pins_[i] = sr.g_a;
+    }
+    return sr;
+}
+
+// A face with one passable edge (an ear) can only end a strip. Unless it is a pinned face, it is
+// split with its neighbour g (+2 faces, even for the two ears a strip could end in: an end that
+// is not where the loops close blocks joins). The ear's children
+// and g's form a ring of four faces entered and left through g's other two edges, so g's
+// children are matched to each other (when g had three passable edges).
+void MatchingBuilder::split_ears() {
+    std::vector<uint32_t> ears;
+    for (uint32_t f = 0; f < mesh_.num_faces(); ++f)
+        if (degree(f) == 1) ears.push_back(f);
+    if (mesh_.num_faces() <= 2) return;
+    for (uint32_t f : ears) {
+        if (f == pins_[0] || f == pins_[1] || degree(f) != 1) continue;
+        uint32_t h = 3 * f;
+        while (!passable(h)) ++h;
+        const uint32_t g = mesh_.neighbor(h);
+        if (degree(g) == 1) continue;  // two faces only: an ear pair is a strip already
+        const uint32_t tn = Mesh::next(mesh_.twin(h));
+        const SplitResult sr = split(h);
+        const uint32_t inner = tn;  // after the split: g_b's half-edge towards g_a
+        const auto has_match = [&](uint32_t x) { return matched_[3 * x] | matched_[3 * x + 1] | matched_[3 * x + 2]; };
+        if (degree(sr.g_a) == 3 && degree(sr.g_b) == 3 && !has_match(sr.g_a) && !has_match(sr.g_b)) set_pair(matched_, inner, 1);
+    }
+}
+
+// Matched edges wanted per face: passable edges beyond the two the strip crosses (one crossed
+// edge for a pinned face, whose other link is the virtual face).
+void MatchingBuilder::set_quotas() {
+    const uint32_t nf = mesh_.num_faces();
+    vlink_.assign(nf, 0);
+    for (uint32_t i = 0; i < num_pins_; ++i) vlink_[pins_[i]] = 1;
+    if (num_pins_ == 2 && pins_[0] == pins_[1]) throw InternalError("matching engine: source and target faces coincide");
+    quota_.assign(nf, 0);
+    for (uint32_t f = 0; f < nf; ++f) {
+        const int cap = 2 - vlink_[f];
+        const int have = matched_[3 * f] + matched_[3 * f + 1] + matched_[3 * f + 2];
+        quota_[f] = static_cast<uint8_t>(std::max(0, static_cast<int>(degree(f)) - cap - have));
+    }
+}
+
+// Greedy matching carried face to face in breadth-first order: across a crossed edge (u, v),
+// if this face's matched edge touches u, the neighbour's should touch v — then the two turns
+// alternate and the GL strip needs no swap there.
+void MatchingBuilder::match_patterned() {
+    const uint32_t nf = mesh_.num_faces();
+    std::vector<uint32_t> pref(nf, kNone), queue;
+    std::vector<uint8_t> seen(nf, 0);
+    queue.reserve(nf);
+    for (uint32_t s = 0; s < nf; ++s) {
+        if (seen[s]) continue;
+        seen[s] = 1;
+        queue.assign(1, s);
+        for (size_t head = 0; head < queue.size(); ++head) {
+            const uint32_t f = queue[head];
+            for (uint32_t i = 0; i < 3 && quota_[f] > 0; ++i) {
+                const uint32_t h = i == 0 && pref[f] != kNone ? pref[f] : 3 * f + (i + (pref[f] == kNone ? 0 : pref[f] % 3)) % 3;
+                if (!passable(h) || matched_[h]) continue;
+                const uint32_t g = mesh_.neighbor(h);
+                if (quota_[g] == 0) continue;
+                set_pair(matched_, h, 1);
+                --quota_[f];
+                --quota_[g];
+            }
+            uint32_t m = kNone;  // the edge this face does not cross
+            for (uint32_t k = 0; k < 3; ++k)
+                if (matched_[3 * f + k] || !passable(3 * f + k)) m = 3 * f + k;
+            for (uint32_t k = 0; k < 3; ++k) {
+                const uint32_t h = 3 * f + k;
+                if (!passable(h) || matched_[h]) continue;
+                const uint32_t g = mesh_.neighbor(h);
+                if (seen[g]) continue;
+                seen[g] = 1;
+                queue.push_back(g);
+                const uint32_t t = mesh_.twin(h);
+                if (m == Mesh::prev(h))
+                    pref[g] = Mesh::prev(t);  // m touches from(h): g's should touch to(h)
+                else if (m == Mesh::next(h))
+                    pref[g] = Mesh::next(t);  // and the other way round
+            }
+        }
+    }
+}
+
+// Augmenting path from a face still wanting a matched edge to another one: alternately an
+// unmatched and a matched passable edge. Faces are visited once (simple paths; blossoms are not
+// searched), at most `budget` of them. True if the matching grew.
+bool MatchingBuilder::augment_from(uint32_t u, std::vector<uint32_t>& stamp, uint32_t mark, size_t budget) {
+    std::vector<uint32_t>& queue = aug_queue_;
+    queue.assign(1, u);
+    stamp[u] = mark;
+    for (size_t head = 0; head < queue.size() && queue.size() < budget; ++head) {
+        const uint32_t x = queue[head];
+        for (uint32_t k = 0; k < 3; ++k) {
+            const uint32_t h = 3 * x + k;
+            if (!passable(h) || matched_[h]) continue;
+            const uint32_t y = mesh_.neighbor(h);
+            if (stamp[y] == mark) continue;
+            stamp[y] = mark;
+            if (quota_[y] > 0) {  // flip the path back to u
+                set_pair(matched_, h, 1);
+                for (uint32_t z = x; z != u; z = aug_prev_[z]) {
+                    set_pair(matched_, aug_matched_[z], 0);
+                    set_pair(matched_, aug_unmatched_[z], 1);
+                }
+                --quota_[u];
+                --quota_[y];
+                return true;
+            }
+            for (uint32_t j = 0; j < 3; ++j) {
+                const uint32_t e = 3 * y + j;
+                if (!matched_[e]) continue;
+                const uint32_t z = mesh_.neighbor(e);
+                if (stamp[z] == mark) continue;
+                stamp[z] = mark;
+                aug_prev_[z] = x;
+                aug_unmatched_[z] = h;
+                aug_matched_[z] = e;
+                queue.push_back(z);
+            }
+        }
+    }
+    return false;
+}
+
+/// Initial matching for boost::matching(): the one already in the mate map.
+template <typename Graph, typename MateMap>
+struct keep_matching {
+    static void find_matching(const Graph&, MateMap) {}
+};
+
+// Maximum matching (Edmonds' blossoms, Boost.Graph) on the faces within `ball` faces of each
+// short face, starting from the current matching; faces matched across the ball's rim stay as
+// they are. Where a perfect matching exists (closed surfaces) this finds the alternating paths
+// through odd cycles that the plain search misses. True if some face was repaired.
+bool MatchingBuilder::repair_in_balls(std::vector<uint32_t>& short_faces, size_t ball) {
+    const uint32_t nf = mesh_.num_faces();
+    std::vector<uint32_t> local(nf, kNone), faces, queue;
+    auto want_one = [&](uint32_t f) { return static_cast<int>(degree(f)) - (2 - vlink_[f]) == 1; };
+    for (uint32_t s : short_faces) {
+        if (local[s] != kNone) continue;
+        queue.assign(1, s);
+        local[s] = 0;
+        for (size_t head = 0; head < queue.size() && queue.size() < ball; ++head)
+            for (uint32_t h = 3 * queue[head]; h < 3 * queue[head] + 3; ++h) {
+                if (!passable(h)) continue;
+                const uint32_t g = mesh_.neighbor(h);
+                if (local[g] == kNone) local[g] = 0, queue.push_back(g);
+            }
+        faces.insert(faces.end(), queue.begin(), queue.end());
+    }
+    // Keep faces that take exactly one matched edge and whose partner is inside too.
+    std::vector<uint32_t> kept;
+    for (uint32_t f : faces)
+        if (want_one(f))
+            local[f] = 1;
+        else
+            local[f] = kNone;
+    for (uint32_t f : faces) {
+        if (local[f] == kNone) continue;
+        bool inside = true;
+        for (uint32_t h = 3 * f; h < 3 * f + 3; ++h)
+            if (matched_[h] && local[mesh_.neighbor(h)] == kNone) inside = false;
+        if (inside) kept.push_back(f);
+    }
+    for (uint32_t f : faces) local[f] = kNone;
+    for (uint32_t i = 0; i < kept.size(); ++i) local[kept[i]] = i;
+    using Graph = boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS>;
+    using Vertex = boost::graph_traits<Graph>::vertex_descriptor;
+    Graph graph(kept.size());
+    std::vector<Vertex> mate(kept.size(), boost::graph_traits<Graph>::null_vertex());
+    for (uint32_t i = 0; i < kept.size(); ++i)
+        for (uint32_t h = 3 * kept[i]; h < 3 * kept[i] + 3; ++h) {
+            if (!passable(h)) continue;
+            const uint32_t j = local[mesh_.neighbor(h)];
+            if (j == kNone || j <= i) continue;
+            boost::add_edge(i, j, graph);
+            if (matched_[h]) mate[i] = j, mate[j] = i;
+        }
+    boost::matching<Graph, Vertex*, boost::property_map<Graph, boost::vertex_index_t>::type, boost::edmonds_augmenting_path_finder,
+                    keep_matching, boost::no_matching_verifier>(graph, mate.data(), boost::get(boost::vertex_index, graph));
+    for (uint32_t f : kept)
+        for (uint32_t h = 3 * f; h < 3 * f + 3; ++h) matched_[h] = 0;
+    for (uint32_t i = 0; i < kept.size(); ++i) {
+        quota_[kept[i]] = mate[i] == boost::graph_traits<Graph>::null_vertex();
+        if (quota_[kept[i]] || mate[i] < i) continue;
+        for (uint32_t h = 3 * kept[i]; h < 3 * kept[i] + 3; ++h)
+            if (passable(h) && local[mesh_.neighbor(h)] == mate[i]) {
+                set_pair(matched_, h, 1);
+                break;
+            }
+    }
+    for (uint32_t f : kept) local[f] = kNone;
+    const size_t before = short_faces.size();
+    std::erase_if(short_faces, [&](uint32_t f) { return quota_[f] == 0; });
+    return short_faces.size() < before;
+}
+
+// Faces the matching left short: local augmenting searches with a growing budget; what is still
+// short drops crossed edges instead (each drop leaves a path end).
+void MatchingBuilder::settle_leftovers() {
+    const uint32_t nf = mesh_.num_faces();
+    std::vector<uint32_t> stamp(nf, 0), short_faces;
+    aug_prev_.assign(nf, kNone);
+    aug_matched_.assign(nf, kNone);
+    aug_unmatched_.assign(nf, kNone);
+    for (uint32_t f = 0; f < nf; ++f)
+        if (quota_[f] > 0) short_faces.push_back(f);
+    uint32_t mark = 0;
+    for (size_t budget : {size_t{64}, size_t{1024}, size_t{16384}}) {
+        for (uint32_t f : short_faces)
+            while (quota_[f] > 0 && augment_from(f, stamp, ++mark, budget)) {
+            }
+        std::erase_if(short_faces, [&](uint32_t f) { return quota_[f] == 0; });
+    }
+    for (size_t ball : {size_t{512}, size_t{8192}, size_t{131072}})
+        if (!short_faces.empty()) repair_in_balls(short_faces, ball);
+    for (uint32_t h = 0; h < 3 * nf; ++h) used_[h] = passable(h) && !matched_[h];
+    for (uint32_t f : short_faces)
+        for (uint32_t k = 0; k < 3 && quota_[f] > 0; ++k)
+            if (used_[3 * f + k]) {
+                set_pair(used_, 3 * f + k, 0);
+                --quota_[f];
+            }
+    stats_.unmatched = static_cast<uint32_t>(short_faces.size());
+}
+
+// Loops and paths: components of the crossed edges, the virtual face joining the pinned faces.
+void MatchingBuilder::label_structures() {
+    const uint32_t nf = mesh_.num_faces();
+    sid_.assign(nf, kNone);
+    uf_.clear();
+    cycle_.clear();
+    pinned_.clear();
+    std::vector<uint32_t> stack;
+    for (uint32_t s = 0; s < nf; ++s) {
+        if (sid_[s] != kNone) continue;
+        const uint32_t id = static_cast<uint32_t>(uf_.size());
+        bool ends = false, pinned = false;
+        stack.assign(1, s);
+        sid_[s] = id;
+        while (!stack.empty()) {
+            const uint32_t f = stack.back();
+            stack.pop_back();
+            ends |= hdeg(f) < 2;
+            std::vector<uint32_t> next;
+            for (uint32_t k = 0; k < 3; ++k)
+                if (used_[3 * f + k]) next.push_back(mesh_.neighbor(3 * f + k));
+            if (vlink_[f]) {
+                pinned = true;
+                for (uint32_t i = 0; i < num_pins_; ++i) next.push_back(pins_[i]);
+            }
+            for (uint32_t g : next)
+                if (sid_[g] == kNone) {
+                    sid_[g] = id;
+                    stack.push_back(g);
+                }
+        }
+        uf_.push_back(id);
+        cycle_.push_back(!ends && !(pinned && num_pins_ == 1));
+        pinned_.push_back(pinned);
+    }
+    stats_.loops = static_cast<uint32_t>(uf_.size());
+}
+
+// The faces around interior vertex v, as the half-edges leaving v (one per face, in turn);
+// across prev(ring[i]) lies the next face. The ring is alternating when those edges are crossed
+// and matched in turn. If each crossed edge lies in a different loop, swapping crossed and matched
+// edges joins all those loops into one for free (each face keeps one matched edge).
+bool MatchingBuilder::flip_ring(uint32_t v, std::vector<uint32_t>& ring) {
+    constexpr uint32_t kMaxRing = 12;
+    ring.clear();
+    const uint32_t h0 = mesh_.vertex_halfedge(v);
+    if (h0 == kNone) return false;
+    const uint8_t first = used_[Mesh::prev(h0)];
+    for (uint32_t h = h0;;) {
+        const uint32_t e = Mesh::prev(h);
+        if (!passable(e) || vlink_[Mesh::face(h)] || ring.size() == kMaxRing) return false;
+        if (used_[e] != (first ^ (ring.size() % 2)) || used_[e] == matched_[e]) return false;
+        ring.push_back(h);
+        h = mesh_.twin(e);
+        if (h == h0) break;
+    }
+    if (ring.size() % 2 != 0) return false;
+    std::vector<uint32_t> roots;
+    for (size_t i = first ? 0 : 1; i < ring.size(); i += 2) {
+        const uint32_t r = find(sid_[Mesh::face(ring[i])]);
+        if (!cycle_[r] || pinned_[r] || std::find(roots.begin(), roots.end(), r) != roots.end()) return false;
+        roots.push_back(r);
+    }
+    for (uint32_t h : ring) {
+        const uint32_t e = Mesh::prev(h);
+        set_pair(used_, e, !used_[e]);
+        set_pair(matched_, e, !matched_[e]);
+    }
+    for (size_t i = 1; i < roots.size(); ++i) uf_[roots[i]] = roots[0];
+    return true;
+}
+
+// Fewer loops before any split: flip alternating vertex rings that join loops.
+void MatchingBuilder::reduce_loops() {
+    std::vector<uint32_t> ring;
+    for (uint32_t pass = 0, flips = 1; pass < 4 && flips > 0; ++pass) {  // a flip can enable another
+        flips = 0;
+        for (uint32_t v = 0; v < mesh_.num_vertices(); ++v) flips += flip_ring(v, ring);
+        stats_.ring_flips += flips;
+    }
+}
+
+// Joins along the passable edge h (not crossed): a and b are the roots of its two faces.
+void MatchingBuilder::join(uint32_t h, uint32_t a, uint32_t b, bool cycle, bool pinned) {
+    set_pair(used_, h, 1);
+    uf_[b] = a;
+    cycle_[a] = cycle;
+    pinned_[a] = pinned;
+}
+
+// Path end across h joins loop a for free: the loop opens at h's face (one crossed edge dropped).
+void MatchingBuilder::rotate_into(uint32_t h, uint32_t a, uint32_t b) {
+    const uint32_t f = Mesh::face(h);
+    for (uint32_t k = 0; k < 3; ++k)
+        if (used_[3 * f + k]) {
+            set_pair(used_, 3 * f + k, 0);
+            break;
+        }
+    join(h, a, b, false, pinned_[b]);
+}
+
+// Loop a (h's face f crosses its two other edges) joins b (g = the face across h) by one
+// midpoint split of h: f_a-g_a and f_b-g_b become crossed, f's and g's outer edges stay as they
+// were. A loop joined to a loop stays a loop; to a path (g inside, at an end, or alone), a path.
+void MatchingBuilder::merge_by_split(uint32_t h, uint32_t a, uint32_t b) {
+    const uint32_t t = mesh_.twin(h);
+    split(h);
+    set_pair(used_, h, 1);  // f_a - g_a
+    set_pair(used_, t, 1);  // g_b - f_b
+    uf_[b] = a;
+    cycle_[a] = cycle_[b];
+    pinned_[a] = pinned_[a] || pinned_[b];
+}
+
+bool MatchingBuilder::try_merge(uint32_t h, bool allow_split) {
+    const uint32_t f = Mesh::face(h), g = mesh_.neighbor(h);
+    const uint32_t a = find(sid_[f]), b = find(sid_[g]);
+    const bool fe = hdeg(f) < 2, ge = hdeg(g) < 2;
+    if (a == b) {
+        if (cycle_[a] || !fe || !ge || f == g) return false;
+        set_pair(used_, h, 1);  // a path whose two ends touch closes into a loop
+        cycle_[a] = 1;
+        return true;
+    }
+    if (fe && ge) return join(h, a, b, false, pinned_[a] || pinned_[b]), true;
+    if (cycle_[a] && !pinned_[a] && ge) return rotate_into(h, a, b), true;
+    if (cycle_[b] && !pinned_[b] && fe) return rotate_into(mesh_.twin(h), b, a), true;
+    if (!allow_split || vlink_[f] || vlink_[g]) return false;
+    if (cycle_[a] && !(pinned_[a] && !cycle_[b])) return merge_by_split(h, a, b), true;
+    if (cycle_[b] && !(pinned_[b] && !cycle_[a])) return merge_by_split(mesh_.twin(h), b, a), true;
+    return false;
+}
+
+// Free joins first (path ends, path ends into loops), then splits, then free joins again.
+void MatchingBuilder::merge_all() {
+    for (bool allow_split : {false, true, false})
+        for (uint32_t f = 0; f < mesh_.num_faces(); ++f)
+            for (uint32_t k = 0; k < 3; ++k) {
+                const uint32_t h = 3 * f + k;
+                if (!passable(h) || used_[h]) continue;
+                if (find(sid_[f]) == find(sid_[mesh_.neighbor(h)]) && (cycle_[find(sid_[f])] || hdeg(f) == 2)) continue;
+                if (try_merge(h, allow_split)) k = kNone;  // f's edges changed: look at all three again
+            }
+}
+
+bool MatchingBuilder::single_strip_ready() {
+    uint32_t roots = 0, root = kNone;
+    for (uint32_t s = 0; s < uf_.size(); ++s)
+        if (find(s) == s) ++roots, root = s;
+    if (roots != 1) return false;
+    return num_pins_ != 2 || cycle_[root];
+}
+
+// The faces in strip order: from the first pinned face, else from a path end, else around the
+// loop from face 0. Empty if the crossed edges do not form one strip.
+std::vector<uint32_t> MatchingBuilder::walk() const {
+    const uint32_t nf = mesh_.num_faces();
+    uint32_t start = num_pins_ ? pins_[0] : kNone, in = kNone;
+    for (uint32_t f = 0; f < nf && start == kNone; ++f)
+        if (hdeg(f) < 2) start = f;
+    if (start == kNone) {  // one loop: cut it at face 0, as if entered by one of its crossed edges
+        start = 0;
+        for (uint32_t k = 0; k < 3; ++k)
+            if (used_[k]) in = k;
+    }
+    std::vector<uint32_t> order;
+    order.reserve(nf);
+    for (uint32_t f = start; order.size() < nf;) {
+        order.push_back(f);
+        uint32_t out = kNone;
+        for (uint32_t k = 0; k < 3; ++k)
+            if (used_[3 * f + k] && 3 * f + k != in) out = 3 * f + k;
+        if (out == kNone) break;
+        in = mesh_.twin(out);
+        f = Mesh::face(in);
+        if (f == start) break;
+    }
+    return order;
+}
+
+StripResult MatchingBuilder::finish(std::vector<uint32_t> order) {
+    const uint32_t nf = mesh_.num_faces();
+    if (order.size() != nf)
+        throw InternalError("matching engine: strip covers " + std::to_string(order.size()) + " of " + std::to_string(nf) + " faces");
+    if (num_pins_ == 2 && order.back() != pins_[1]) throw InternalError("matching engine: strip does not end at the target face");
+    stats_.swaps = count_swaps(mesh_, order);
+    stats_.output_triangles = nf;
+    StripResult result;
+    result.order = std::move(order);
+    result.stats = stats_;
+    result.mesh = std::move(mesh_);
+    return result;
+}
+
+// Not one strip (paths whose ends never touch): the growth builder, which always ends in one
+// strip, finishes on the mesh as split so far.
+StripResult MatchingBuilder::fallback() {
+    StripOptions o = opt_;
+    o.engine = StripEngine::Growth;
+    if (o.seed_face && o.source && !face_has_vertex(mesh_, *o.seed_face, *o.source)) o.seed_face.reset();
+    const uint32_t splits = stats_.splits;
+    StripResult r = build_strip_growth(std::move(mesh_), o);
+    r.stats.input_triangles = stats_.input_triangles;
+    r.stats.splits += splits;
+    r.stats.loops = stats_.loops;
+    r.stats.unmatched = stats_.unmatched;
+    r.stats.growth_fallback = true;
     r.stats.engine = StripEngine::Matching;
+    r.fundamental_positions.clear();
+    r.take_time.clear();
     return r;
+}
+
+StripResult MatchingBuilder::run() {
+    const uint32_t nf = mesh_.num_faces();
+    check_strip_request(mesh_, opt_);
+    blocked_ = constraint_halfedges(mesh_, opt_);
+    stats_.input_triangles = nf;
+    stats_.boundary_loops = mesh_.num_boundary_loops();
+    stats_.genus = mesh_.genus();
+    stats_.engine = StripEngine::Matching;
+    matched_.assign(mesh_.num_halfedges(), 0);
+    used_.assign(mesh_.num_halfedges(), 0);
+    vlink_.assign(nf, 0);
+    quota_.assign(nf, 0);
+    choose_pins();
+    split_ears();
+    set_quotas();
+    match_patterned();
+    settle_leftovers();
+    label_structures();
+    reduce_loops();
+    merge_all();
+    if (opt_.validate_each_split) mesh_.validate();
+    if (!single_strip_ready()) return fallback();
+    std::vector<uint32_t> order = walk();
+    if (order.size() != mesh_.num_faces()) return fallback();
+    return finish(std::move(order));
+}
+
+}  // namespace
+
+StripResult build_strip_matching(Mesh mesh, const StripOptions& options) {
+    MatchingBuilder builder(std::move(mesh), options);
+    return builder.run();
 }
 
 }  // namespace singlestrip

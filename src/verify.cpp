@@ -1121,14 +1121,15 @@ VerifyReport verify(const VerifyInput& in) {
 }
 
 VerifyReport verify_files(const std::string& in_path, const std::string& out_path, const VerifyFileOptions& options) {
+    ReadOptions read;
+    read.format = options.input_format;
+    return verify_files(read_mesh_file(in_path, read), out_path, options);
+}
+
+VerifyReport verify_files(TriangleSoup input, const std::string& out_path, const VerifyFileOptions& options) {
     VerifyInput vi;
-    {
-        ReadOptions read;
-        read.format = options.input_format;
-        TriangleSoup soup = read_mesh_file(in_path, read);
-        vi.in_points = std::move(soup.points);
-        vi.in_faces = std::move(soup.triangles);
-    }
+    vi.in_points = std::move(input.points);
+    vi.in_faces = std::move(input.triangles);
     {
         OutputMesh om = read_output_mesh(out_path);
         vi.out_points = std::move(om.points);

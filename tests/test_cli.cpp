@@ -22,7 +22,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string data(const std::string& name) { return std::string(SINGLESTRIP_SOURCE_DIR) + "/tests/data/" + name; }
+std::string data(const std::string& name) {
+    return std::string(SINGLESTRIP_SOURCE_DIR) + "/tests/data/" + name;
+}
 
 struct CliRun {
     int code = -1;
@@ -43,7 +45,9 @@ CliRun cli(const std::string& args) {
     return r;
 }
 
-std::string q(const std::string& s) { return "'" + s + "'"; }
+std::string q(const std::string& s) {
+    return "'" + s + "'";
+}
 
 struct Scratch {
     fs::path dir;
@@ -116,7 +120,7 @@ TEST(Cli, UsageErrorsExitTwo) {
 TEST(Cli, StripWritesConsistentOutputsAndReport) {
     Scratch s("strip");
     CliRun r = cli("strip " + q(data("pyramid_slashes.obj")) + " -o " + q(s / "o.ply") + " --indices " + q(s / "i.txt") + " --report " +
-                q(s / "r.json"));
+                   q(s / "r.json"));
     ASSERT_EQ(r.code, 0) << r.out;
     EXPECT_NE(r.out.find("6 ->"), std::string::npos) << r.out;  // one-line summary
     auto rep = nlohmann::json::parse(slurp(s / "r.json"));
@@ -145,6 +149,52 @@ TEST(Cli, StripWritesConsistentOutputsAndReport) {
 
     CliRun v = cli("verify " + q(data("pyramid_slashes.obj")) + " " + q(s / "o.ply") + " --indices " + q(s / "i.txt"));
     EXPECT_EQ(v.code, 0) << v.out;
+}
+
+TEST(Cli, EngineChoiceReachesTheStripAndTheReport) {
+    Scratch s("engine");
+    const std::string in = data("pyramid_slashes.obj");
+    for (const char* engine : {"matching", "growth"}) {
+        SCOPED_TRACE(engine);
+        const std::string out = s / (std::string(engine) + ".ply"), idx = s / (std::string(engine) + ".txt"),
+                          rep = s / (std::string(engine) + ".json");
+        CliRun r = cli("strip " + q(in) + " -o " + q(out) + " --indices " + q(idx) + " --report " + q(rep) + " --engine " + engine);
+        ASSERT_EQ(r.code, 0) << r.out;
+        const auto j = nlohmann::json::parse(slurp(rep));
+        EXPECT_EQ(j["engine"], engine);
+        EXPECT_EQ(j["options"]["engine"], engine);
+        CliRun v = cli("verify " + q(in) + " " + q(out) + " --indices " + q(idx));
+        EXPECT_EQ(v.code, 0) << v.out;
+    }
+    // The default is the matching engine.
+    ASSERT_EQ(cli("strip " + q(in) + " -o " + q(s / "d.ply") + " --report " + q(s / "d.json")).code, 0);
+    EXPECT_EQ(nlohmann::json::parse(slurp(s / "d.json"))["options"]["engine"], "matching");
+}
+
+TEST(Cli, UnknownEngineIsAUsageError) {
+    Scratch s("bad-engine");
+    CliRun r = cli("strip " + q(data("tetra.off")) + " -o " + q(s / "o.ply") + " --engine greedy");
+    EXPECT_EQ(r.code, 2) << r.out;
+    EXPECT_NE(r.out.find("unknown engine 'greedy' (choices: matching, growth)"), std::string::npos) << r.out;
+    EXPECT_EQ(cli("strip " + q(data("tetra.off")) + " -o " + q(s / "o.ply") + " --engine").code, 2);
+    EXPECT_EQ(s.count(), 0u);
+}
+
+TEST(Cli, RenderStripsAnInputWithTheEngine) {
+    if (cli("render --help").code != 0) GTEST_SKIP() << "render not built";
+    Scratch s("render-engine");
+    for (const char* engine : {"matching", "growth"}) {
+        SCOPED_TRACE(engine);
+        CliRun r = cli("render builtin:genus2 -o " + q(s / (std::string(engine) + ".png")) + " --engine " + engine +
+                       " --with-cycles --width 64 --height 48");
+        EXPECT_EQ(r.code, 0) << r.out;
+        EXPECT_GT(fs::file_size(s / (std::string(engine) + ".png")), 0u);
+    }
+    EXPECT_EQ(cli("render builtin:genus2 -o " + q(s / "x.png") + " --engine slow").code, 2);
+    EXPECT_EQ(cli("render builtin:genus2 -o " + q(s / "x.png") + " --engine growth --cycles c.json").code, 2);
+    // Without --engine the input must be a strip result, as before.
+    EXPECT_EQ(cli("render " + q(data("tetra.off")) + " -o " + q(s / "x.png") + " --with-cycles").code, 2);
+    EXPECT_FALSE(fs::exists(s / "x.png"));
 }
 
 TEST(Cli, InvalidInputLeavesNoOutput) {

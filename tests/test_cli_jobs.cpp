@@ -2,13 +2,14 @@
 // glTF and batch mode, end to end through the real binary, each result checked by `verify`.
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
+#include <unistd.h>
 #include <array>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
-#include <sys/wait.h>
-#include <unistd.h>
 
 namespace fs = std::filesystem;
 
@@ -32,7 +33,9 @@ CliResult cli(const std::string& args) {
     return r;
 }
 
-std::string src(const std::string& rel) { return std::string(SINGLESTRIP_SOURCE_DIR) + "/" + rel; }
+std::string src(const std::string& rel) {
+    return std::string(SINGLESTRIP_SOURCE_DIR) + "/" + rel;
+}
 
 fs::path fresh_dir(const std::string& name) {
     const fs::path d = fs::temp_directory_path() / ("singlestrip-cli-jobs-" + name + "-" + std::to_string(::getpid()));
@@ -47,10 +50,12 @@ TEST(CliJobs, RoomExampleFromTheReadme) {
     const fs::path d = fresh_dir("room");
     const std::string room = src("examples/room/room.off"), walls = src("examples/room/walls.txt");
     const std::string out = (d / "room.ply").string(), idx = (d / "room.txt").string();
-    const CliResult s = cli("strip '" + room + "' -o '" + out + "' --constraints '" + walls + "' --source 0 --target 650 --indices '" + idx + "'");
+    const CliResult s =
+        cli("strip '" + room + "' -o '" + out + "' --constraints '" + walls + "' --source 0 --target 650 --indices '" + idx + "'");
     ASSERT_EQ(s.code, 0) << s.out;
     EXPECT_NE(s.out.find("1078 ->"), std::string::npos) << s.out;
-    const CliResult v = cli("verify '" + room + "' '" + out + "' --constraints '" + walls + "' --source 0 --target 650 --indices '" + idx + "'");
+    const CliResult v =
+        cli("verify '" + room + "' '" + out + "' --constraints '" + walls + "' --source 0 --target 650 --indices '" + idx + "'");
     EXPECT_EQ(v.code, 0) << v.out;
     EXPECT_NE(v.out.find("OK"), std::string::npos) << v.out;
     // The same output checked against a different target must fail (exit 5).
@@ -78,7 +83,8 @@ TEST(CliJobs, SeparatingConstraintsGiveThePieces) {
     std::ofstream w(walls);
     for (int j = 0; j <= 20; ++j) w << j * 31 + 14 << (j < 20 ? " " : "\n");
     w.close();
-    const CliResult r = cli("strip '" + src("examples/room/room.off") + "' -o '" + (d / "x.ply").string() + "' --constraints '" + walls + "'");
+    const CliResult r =
+        cli("strip '" + src("examples/room/room.off") + "' -o '" + (d / "x.ply").string() + "' --constraints '" + walls + "'");
     EXPECT_EQ(r.code, 4) << r.out;
     EXPECT_NE(r.out.find("2 pieces"), std::string::npos) << r.out;
     fs::remove_all(d);
@@ -87,7 +93,8 @@ TEST(CliJobs, SeparatingConstraintsGiveThePieces) {
 TEST(CliJobs, CyclesJsonAndObjForTheBuiltinModel) {
     const fs::path d = fresh_dir("cycles");
     const std::string out = (d / "g2.ply").string(), cj = (d / "c.json").string(), co = (d / "c.obj").string();
-    const CliResult s = cli("strip builtin:genus2 -o '" + out + "' --cycles '" + cj + "' --cycles-obj '" + co + "' --report '" + (d / "r.json").string() + "'");
+    const CliResult s = cli("strip builtin:genus2 -o '" + out + "' --cycles '" + cj + "' --cycles-obj '" + co + "' --report '" +
+                            (d / "r.json").string() + "'");
     ASSERT_EQ(s.code, 0) << s.out;
     const CliResult v = cli("verify builtin:genus2 '" + out + "' --cycles '" + cj + "'");
     EXPECT_EQ(v.code, 0) << v.out;
@@ -104,7 +111,8 @@ TEST(CliJobs, BatchReportsBadFilesAndKeepsGoing) {
     const fs::path d = fresh_dir("batch");
     const std::string good1 = src("tests/data/tetra.off"), good2 = src("examples/room/room.off");
     const std::string bad = src("tests/data/non_manifold_edge.off"), missing = (d / "missing.off").string();
-    const CliResult r = cli("strip '" + good1 + "' '" + bad + "' '" + good2 + "' '" + missing + "' --out-dir '" + (d / "out").string() + "' --with-indices");
+    const CliResult r = cli("strip '" + good1 + "' '" + bad + "' '" + good2 + "' '" + missing + "' --out-dir '" + (d / "out").string() +
+                            "' --with-indices");
     EXPECT_NE(r.code, 0) << r.out;
     EXPECT_NE(r.out.find("4 file(s): 2 ok, 2 failed"), std::string::npos) << r.out;
     for (const char* stem : {"tetra", "room"}) {
@@ -112,12 +120,34 @@ TEST(CliJobs, BatchReportsBadFilesAndKeepsGoing) {
         ASSERT_TRUE(fs::exists(result)) << result;
         EXPECT_TRUE(fs::exists(d / "out" / (std::string(stem) + ".report.json")));
         const std::string in = std::string(stem) == "tetra" ? good1 : good2;
-        const CliResult v = cli("verify '" + in + "' '" + result.string() + "' --indices '" + (d / "out" / (std::string(stem) + ".indices.txt")).string() + "'");
+        const CliResult v = cli("verify '" + in + "' '" + result.string() + "' --indices '" +
+                                (d / "out" / (std::string(stem) + ".indices.txt")).string() + "'");
         EXPECT_EQ(v.code, 0) << v.out;
     }
     EXPECT_FALSE(fs::exists(d / "out" / "non_manifold_edge.ply"));
     // Batch options that are per file are a usage error.
     EXPECT_EQ(cli("strip '" + good1 + "' '" + good2 + "' --out-dir '" + (d / "o2").string() + "' --source 0").code, 2);
+    fs::remove_all(d);
+}
+
+TEST(CliJobs, BatchTakesTheEngine) {
+    const fs::path d = fresh_dir("batch-engine");
+    const std::string in1 = src("tests/data/tetra.off"), in2 = src("examples/room/room.off");
+    const CliResult r = cli("strip '" + in1 + "' '" + in2 + "' --out-dir '" + (d / "out").string() + "' --engine growth --with-indices");
+    ASSERT_EQ(r.code, 0) << r.out;
+    for (const char* stem : {"tetra", "room"}) {
+        std::ifstream rep(d / "out" / (std::string(stem) + ".report.json"));
+        const std::string text((std::istreambuf_iterator<char>(rep)), std::istreambuf_iterator<char>());
+        EXPECT_NE(text.find("\"engine\": \"growth\""), std::string::npos) << text;
+        const std::string in = std::string(stem) == "tetra" ? in1 : in2;
+        const CliResult v = cli("verify '" + in + "' '" + (d / "out" / (std::string(stem) + ".ply")).string() + "' --indices '" +
+                                (d / "out" / (std::string(stem) + ".indices.txt")).string() + "'");
+        EXPECT_EQ(v.code, 0) << v.out;
+    }
+    const CliResult bad = cli("strip '" + in1 + "' --out-dir '" + (d / "o2").string() + "' --engine none");
+    EXPECT_EQ(bad.code, 2) << bad.out;
+    EXPECT_NE(bad.out.find("choices: matching, growth"), std::string::npos) << bad.out;
+    EXPECT_FALSE(fs::exists(d / "o2"));
     fs::remove_all(d);
 }
 

@@ -8,10 +8,11 @@
 // without its extension ("builtin:genus2" -> "builtin_genus2"). When two inputs share a stem, the
 // later ones (in command-line order) get "<stem>-2", "<stem>-3", ... so no output is overwritten.
 //
-// Each file is processed exactly like `singlestrip strip` on that file (read, prepare_soup with
-// the orient option, build_strip, encode, write atomically); the report has the same keys as
-// the CLI's --report plus "ok"/"error"/"exit_code". A failed file leaves no result of its own
-// behind (its finished outputs are removed), but its report is written with the error.
+// Each file is processed exactly like `singlestrip strip` on that file (read_input, stripify()
+// of pipeline.hpp, write atomically); the report (report.hpp) has the same keys as the CLI's
+// --report plus "ok"/"error"/"exit_code", with "seconds" the file's total time. A failed file
+// leaves no result of its own behind (its finished outputs are removed), but its report is
+// written with the error.
 //
 // Concurrency: files are processed by min(threads, files) std::threads pulling from a shared
 // counter; results are collected in input order, so the summary is deterministic.
@@ -23,19 +24,22 @@
 #include <string>
 #include <vector>
 
+#include "singlestrip/strip.hpp"
+
 namespace singlestrip {
 
 struct BatchOptions {
-    std::string out_dir;              ///< created if missing
-    std::string format = "ply";       ///< result extension: ply, obj, off, glb or gltf
-    std::string input_format;         ///< ReadOptions::format for every input (empty: by extension)
-    bool write_indices = false;       ///< also <stem>.indices.txt
-    bool cycles = false;              ///< also <stem>.cycles.json (fundamental cycles)
-    bool greedy = true;               ///< StripOptions::greedy
-    bool orient = false;              ///< PrepareOptions::orient
-    std::optional<uint32_t> seed_face;///< applied to every file (out of range: that file fails)
-    unsigned threads = 0;             ///< 0 = std::thread::hardware_concurrency()
-    bool progress = true;             ///< progress bar on stderr, only when it is a terminal
+    std::string out_dir;                         ///< created if missing
+    std::string format = "ply";                  ///< result extension: ply, obj, off, glb or gltf
+    std::string input_format;                    ///< ReadOptions::format for every input (empty: by extension)
+    bool write_indices = false;                  ///< also <stem>.indices.txt
+    bool cycles = false;                         ///< also <stem>.cycles.json (fundamental cycles)
+    StripEngine engine = StripEngine::Matching;  ///< StripOptions::engine
+    bool greedy = true;                          ///< StripOptions::greedy
+    bool orient = false;                         ///< PrepareOptions::orient
+    std::optional<uint32_t> seed_face;           ///< applied to every file (out of range: that file fails)
+    unsigned threads = 0;                        ///< 0 = std::thread::hardware_concurrency()
+    bool progress = true;                        ///< progress bar on stderr, only when it is a terminal
 };
 
 /// Outcome for one input file.
@@ -44,8 +48,8 @@ struct BatchItem {
     std::string output;  ///< result path (even when failed: where it would have been)
     std::string report;  ///< report path
     bool ok = false;
-    int exit_code = 0;   ///< the CLI exit code this file alone would have given (errors.hpp)
-    std::string error;   ///< message when !ok
+    int exit_code = 0;  ///< the CLI exit code this file alone would have given (errors.hpp)
+    std::string error;  ///< message when !ok
     uint32_t input_triangles = 0, output_triangles = 0, splits = 0;
     size_t strip_indices = 0;
     double seconds = 0;

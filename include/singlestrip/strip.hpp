@@ -63,12 +63,17 @@ struct StripStats {
     long long genus = 0;
     uint32_t boundary_loops = 0;
     StripEngine engine = StripEngine::Matching;  ///< the engine that built the strip
-    uint32_t loops = 0;  ///< matching engine: loops and paths of the 2-factor before joining
+    uint32_t loops = 0;                          ///< matching engine: loops and paths before joining
+    uint32_t ring_flips = 0;                     ///< matching engine: vertex rings flipped to join loops for free
+    uint32_t unmatched = 0;                      ///< matching engine: faces left short by the matching (path ends)
+    /// Matching engine: its loops and paths could not be joined into one strip, so the growth
+    /// builder finished the (partly split) mesh.
+    bool growth_fallback = false;
 };
 
 struct StripResult {
-    Mesh mesh;                   ///< the split mesh (faces in construction order)
-    std::vector<uint32_t> order; ///< faces of `mesh` in strip order (a permutation of all faces)
+    Mesh mesh;                    ///< the split mesh (faces in construction order)
+    std::vector<uint32_t> order;  ///< faces of `mesh` in strip order (a permutation of all faces)
     /// Positions in `order` of the fundamental triangles met (§3.1, seeds of §4's cycles).
     std::vector<uint32_t> fundamental_positions;
     /// Per face of `mesh`: when it was taken (0 = the seed; the two children of a split strip

@@ -110,6 +110,10 @@ struct VerifyFileOptions {
 VerifyReport verify_files(const std::string& in_path, const std::string& out_path,
                           const VerifyFileOptions& options = {});
 
+/// The same with the input mesh already read (e.g. a built-in model); options.input_format is
+/// not used.
+VerifyReport verify_files(TriangleSoup input, const std::string& out_path, const VerifyFileOptions& options = {});
+
 /// An output mesh as read back from a file.
 struct OutputMesh {
     std::vector<Point3> points;

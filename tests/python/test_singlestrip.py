@@ -218,3 +218,23 @@ def test_tetra_file_end_to_end():
     r = ss.strip(v, f, cycles=True)
     check_result(v, f, r)
     assert r["cycles"] == [] or len(r["cycles"]) == 0
+
+
+@pytest.mark.parametrize("engine", ["matching", "growth"])
+def test_engine_keyword(engine):
+    v, f = torus(8, 6)
+    r = ss.strip(v, f, engine=engine, cycles=True)
+    check_result(v, f, r)
+    assert r["report"]["engine"] == engine
+    assert r["report"]["options"]["engine"] == engine
+
+
+def test_default_engine_is_matching():
+    v, f = grid(3)
+    assert ss.strip(v, f)["report"]["options"]["engine"] == "matching"
+
+
+def test_unknown_engine_raises_value_error():
+    v, f = grid(3)
+    with pytest.raises(ValueError, match=r"unknown engine 'fast' \(choices: matching, growth\)"):
+        ss.strip(v, f, engine="fast")

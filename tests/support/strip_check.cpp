@@ -1,16 +1,18 @@
 #include "strip_check.hpp"
 
-#include "singlestrip/encode.hpp"
-#include "singlestrip/mesh.hpp"
+#include "singlestrip/pipeline.hpp"
 
 namespace singlestrip::testing {
 
 StripCheck strip_and_verify(const TriangleSoup& soup, const StripOptions& options) {
+    PipelineOptions o;
+    o.strip = options;
+    o.self_check = true;
+    PipelineResult r = stripify(soup, o);
     StripCheck c;
-    c.result = build_strip(Mesh::from_soup(soup), options);
-    c.result.mesh.validate();
-    c.arrays = strip_arrays(c.result);
-    c.indices = encode_triangle_strip(c.arrays.faces);
+    c.result = std::move(r.strip);
+    c.arrays = std::move(r.arrays);
+    c.indices = std::move(r.indices);
     VerifyInput in;
     in.in_points = soup.points;
     in.in_faces = soup.triangles;
@@ -28,8 +30,8 @@ StripCheck strip_and_verify(const TriangleSoup& soup, const StripOptions& option
 std::string describe(const StripCheck& c) {
     const StripStats& s = c.result.stats;
     return "in " + std::to_string(s.input_triangles) + " out " + std::to_string(s.output_triangles) + " splits " +
-           std::to_string(s.splits) + " swaps " + std::to_string(s.swaps) + " indices " +
-           std::to_string(c.indices.size()) + "\n" + c.report.to_string();
+           std::to_string(s.splits) + " swaps " + std::to_string(s.swaps) + " indices " + std::to_string(c.indices.size()) + "\n" +
+           c.report.to_string();
 }
 
 }  // namespace singlestrip::testing

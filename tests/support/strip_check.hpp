@@ -16,8 +16,8 @@ struct StripCheck {
     VerifyReport report;
 };
 
-/// Mesh::from_soup + build_strip + strip_arrays + encode_triangle_strip, then verify() with the
-/// indices, the options' constraints and source/target. Exceptions from the builder propagate.
+/// stripify() (pipeline.hpp, with its self checks) on `soup` with `options`, then verify() with
+/// the indices, the options' constraints and source/target. Exceptions propagate.
 StripCheck strip_and_verify(const TriangleSoup& soup, const StripOptions& options = {});
 
 /// One-line description of a result, for failure messages.
