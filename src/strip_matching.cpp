@@ -474,10 +474,12 @@ void MatchingBuilder::repair_short(std::vector<uint32_t>& short_faces) {
             }
         std::erase_if(short_faces, [&](uint32_t f) { return quota_[f] == 0; });
     }
-    // Edmonds on balls: each face's own, then (for a few faces only: it costs O(ball) per
-    // augmenting path) one search over the union of larger balls.
+    // Edmonds on balls: each face's own, then one search over the union of larger balls (it
+    // costs O(ball) per augmenting path).
+    // Larger balls only for few faces: many faces still short are structural (no 2-factor).
     for (size_t ball : {size_t{512}, kBallOneByOne, size_t{32768}}) {
-        if (short_faces.empty() || (ball > kBallOneByOne && short_faces.size() > 16)) break;
+        const size_t most = ball == 512 ? SIZE_MAX : ball == kBallOneByOne ? 64 : 16;
+        if (short_faces.empty() || short_faces.size() > most) break;
         if (!repair_in_balls(short_faces, ball)) break;
     }
 }
