@@ -282,32 +282,60 @@ std::vector<uint32_t> positions_of(const std::vector<uint32_t>& order, uint32_t 
     return pos;
 }
 
-}  // namespace
+/// dim H1(M; Z2) = 2g+h-1, or 2g on a closed surface.
+size_t rank_of(const Mesh& mesh) {
+    const long long loops = mesh.num_boundary_loops();
+    return static_cast<size_t>(2 * mesh.genus() + (loops > 0 ? loops - 1 : 0));
+}
 
-Cycles compute_fundamental_cycles(const StripResult& result) {
-    const Mesh& mesh = result.mesh;
-    const uint32_t nf = mesh.num_faces();
-    const std::vector<uint32_t> pos = positions_of(result.order, nf);
-    // The growth builder records its fundamental triangles and when each face was taken; any
-    // other strip order gets them by replay, and its positions serve as take times: the faces
-    // after a fundamental triangle are then exactly the region it was removed from.
-    const bool recorded = result.take_time.size() == nf;
-    const std::vector<uint32_t> fundamental =
-        recorded ? result.fundamental_positions : replay_fundamental_positions(mesh, result.order);
-    for (const uint32_t p : fundamental)
-        if (p >= nf) throw InternalError("fundamental cycles: fundamental position out of range");
-    const StripView view{mesh, result.order, pos, recorded ? result.take_time : pos};
+/// A candidate that, apart from T (its first face), runs through faces after position p only.
+bool in_suffix(const StripView& v, const Candidate& c, uint32_t p) {
+    if (c.lazy) return c.lo > p;
+    for (size_t k = 1; k < c.faces.size(); ++k)
+        if (v.pos[c.faces[k]] <= p) return false;
+    return true;
+}
 
+// Replayed triangles, no classes needed. Let T at position p (p >= 1) have exactly two
+// neighbours after it, joined in U_{p+1} (the replay found it fundamental). A cycle through T and
+// otherwise through U_{p+1} is, in H1(U_p), the new class T adds plus a class of U_{p+1}; so a
+// cycle per triangle, each inside its own suffix, are independent in H1(U_1) (take the one of
+// smallest position in a vanishing sum), and U_1 -> M is injective on H1 when the replay found
+// exactly dim triangles (no face caps a hole). Each triangle keeps its shortest such candidate
+// (a parallel path always is one). False, with `chosen` unspecified, when a condition fails.
+bool choose_nested(const StripView& v, FaceSearch& search, const std::vector<uint32_t>& fundamental, size_t dim,
+                   std::vector<Candidate>& chosen) {
+    if (fundamental.size() != dim) return false;
+    chosen.clear();
+    for (size_t i = 0; i < fundamental.size(); ++i) {
+        const uint32_t p = fundamental[i];
+        if (p == 0 || (i > 0 && p <= fundamental[i - 1])) return false;
+        uint32_t later = 0;
+        for (uint32_t k = 0; k < 3; ++k) {
+            const uint32_t g = v.mesh.neighbor(Mesh::halfedge(v.order[p], k));
+            later += g != kNone && v.pos[g] > p;
+        }
+        if (later != 2) return false;
+        std::vector<Candidate> cand = candidates_for(v, search, p);
+        auto it = std::find_if(cand.begin(), cand.end(), [&](const Candidate& c) { return in_suffix(v, c, p); });
+        if (it == cand.end()) return false;
+        it->materialize(v.order);
+        chosen.push_back(std::move(*it));
+    }
+    return true;
+}
+
+/// Any fundamental triangles: classes computed, the shortest independent candidate kept.
+std::vector<Candidate> choose_independent(const StripView& view, FaceSearch& search, const std::vector<uint32_t>& fundamental) {
     // Shortcuts and strip segments can be null-homologous or dependent (a steepest ascent that
     // closes around one vertex of T; with deferred islands spliced in, strip positions are not
     // the order in which faces were taken, so a segment may miss the handle). Keep, per
     // fundamental triangle in strip order, the shortest candidate independent in H1(M; Z2) of
     // those kept so far; fill the slots left with the shortest independent tree–cotree generators.
-    const HomologyClassifier classifier(mesh);
+    const HomologyClassifier classifier(view.mesh);
     const size_t dim = classifier.dimension();
     Z2Basis basis(dim);
     auto keep = [&](const std::vector<uint32_t>& faces) { return basis.insert(classifier.classify(faces)); };
-    FaceSearch search(mesh);
     std::vector<Candidate> chosen(fundamental.size());
     std::vector<size_t> pending;
     size_t rank = 0;
@@ -317,7 +345,7 @@ Cycles compute_fundamental_cycles(const StripResult& result) {
         std::vector<Candidate> cand = candidates_for(view, search, fundamental[i]);
         size_t next = 0;
         for (size_t slot = i; slot < j; ++slot) {
-            while (next < cand.size() && !keep(cand[next].materialize(result.order))) ++next;
+            while (next < cand.size() && !keep(cand[next].materialize(view.order))) ++next;
             if (next == cand.size()) {
                 pending.push_back(slot);
                 continue;
@@ -348,6 +376,32 @@ Cycles compute_fundamental_cycles(const StripResult& result) {
                 ++rank;
             }
     }
+
+    return chosen;
+}
+
+}  // namespace
+
+Cycles compute_fundamental_cycles(const StripResult& result) {
+    const Mesh& mesh = result.mesh;
+    const uint32_t nf = mesh.num_faces();
+    const std::vector<uint32_t> pos = positions_of(result.order, nf);
+    // The growth builder records its fundamental triangles and when each face was taken; any
+    // other strip order gets them by replay, and its positions serve as take times: the faces
+    // after a fundamental triangle are then exactly the region it was removed from.
+    const bool recorded = result.take_time.size() == nf;
+    const std::vector<uint32_t> fundamental =
+        recorded ? result.fundamental_positions : replay_fundamental_positions(mesh, result.order);
+    for (const uint32_t p : fundamental)
+        if (p >= nf) throw InternalError("fundamental cycles: fundamental position out of range");
+    const StripView view{mesh, result.order, pos, recorded ? result.take_time : pos};
+
+    // A replayed strip usually needs no homology classes at all (choose_nested()); otherwise
+    // each candidate's class is computed and checked against those kept.
+    FaceSearch search(mesh);
+    std::vector<Candidate> chosen;
+    const bool nested = !recorded && choose_nested(view, search, fundamental, rank_of(mesh), chosen);
+    if (!nested) chosen = choose_independent(view, search, fundamental);
 
     Cycles out;
     const StripArrays arrays = strip_arrays(result);

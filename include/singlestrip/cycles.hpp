@@ -15,10 +15,18 @@
 //     on the mesh boundary); beta1 = b0 - chi (+1 once the whole closed surface is back).
 //     O(F alpha(F)). Positions then serve as take times: the region "still unstriped" after T is
 //     exactly the faces after it, and the parallel path (5) runs through them.
-// Either way the cycles are made by the rules below. The replay's parallel paths span H1(M; Z2)
-// (each closes a class new to H1 of its suffix), but the greedy choice of shortest candidates
-// can still leave a triangle without an independent one (about 6% of them on
-// make_genus_surface() at high genus, either engine): the tree–cotree fallback fills those.
+// Either way the candidates are the rules below; how one is kept differs.
+//   * Replayed (when the replay found exactly 2g+h-1 triangles, none at position 0, each with
+//     exactly two neighbours after it): each T keeps its shortest candidate that, apart from T,
+//     runs through faces after T only (a parallel path always does). No class is computed: such
+//     a cycle is, in H1(U_p), the class T adds plus one of U_{p+1}, so one per triangle are
+//     independent in H1(U_1), and H1(U_1) -> H1(M) is injective when no face capped a hole.
+//     Cost: the candidates' searches and lengths, no term in g x dim.
+//   * Otherwise (growth records; a replay with an interior first face on a surface with boundary,
+//     which finds one triangle more than the rank): classes are computed as below and each T
+//     keeps its shortest independent candidate; the greedy choice can leave a triangle without
+//     one (about 6% of them on make_genus_surface() at high genus with growth records), and the
+//     tree–cotree fallback fills those.
 //
 // Each fundamental triangle T gets one cycle. With positions taken in the strip order, D = the
 // neighbour of T with the largest position and S = the one with the second largest, the
@@ -53,22 +61,23 @@
 // Guarantees (any seed, any constraints, any source/target).
 //   * Every cycle is closed, simple, made of edge-adjacent output faces.
 //   * There are exactly 2g+h-1 cycles (2g on a closed surface) and they are independent in
-//     H1(M; Z2): a basis. Each fundamental triangle met during stripification contributes its
-//     shortest independent candidate (steepest ascent first, as in §4); when the fundamental
+//     H1(M; Z2): a basis. Each fundamental triangle contributes its shortest independent
+//     candidate (shortest in-suffix one when replayed, see above); when the fundamental
 //     triangles are fewer than the surface's rank (constraint edges hide a handle from the
 //     unstriped region; an interior seed on a surface with boundary) the rest are the shortest
 //     independent tree–cotree generators, and fundamental triangles beyond the rank add nothing.
 //     `sources` says which rule produced each cycle. Checked by the independent verifier in
 //     tests/test_cycles.cpp and tests/test_constraints.cpp.
 //
-// Complexity, for F faces and dim = 2g+h-1: the replay O(F alpha(F)); the classifier O(V + F)
-// once; per triangle, breadth-first searches that cost the faces they visit (arrays allocated
-// once, reset by stamps), walks bounded as said in (1), strip segments kept as ranges until
-// examined; per candidate examined (shortest first, until one is independent) O(n log n + dim)
-// to classify its n faces and O(dim^2 / 64) at worst to reduce the class. Tree–cotree
-// generators are built only when kept (their classes are unit vectors). Nothing costs O(F) per
-// triangle: on make_genus_surface(6724, 1) (282K faces) the cycles take 0.27 s, the growth
-// strip 0.1 s.
+// Complexity, for F faces and dim = 2g+h-1: the replay O(F alpha(F)); per triangle,
+// breadth-first searches that cost the faces they visit (arrays allocated once, reset by
+// stamps), walks bounded as said in (1), strip segments kept as ranges until chosen or
+// examined. With classes (growth records): the classifier O(V + F) once; per candidate examined
+// (shortest first, until one is independent) O(n log n + dim) to classify its n faces and
+// O(dim^2 / 64) at worst to reduce the class; tree–cotree generators are built only when kept
+// (their classes are unit vectors). Nothing costs O(F) per triangle. make_genus_surface(6724, 1):
+// matching strip (256K faces) 0.07 s of cycles; growth strip (282K faces) 0.3 s with its
+// records, 0.08 s replayed.
 #pragma once
 
 #include <cstdint>
