@@ -2,6 +2,7 @@
 #include "families.hpp"
 
 #include <cmath>
+#include <utility>
 
 #include "scaling.hpp"
 #include "singlestrip/generators.hpp"
@@ -30,33 +31,18 @@ std::vector<Family> scaling_families() {
 }
 
 std::vector<Family> awkward_families() {
-    using S = Generated;
-    const std::vector<uint64_t> sizes = {10000, 100000, 1000000};
-    auto family = [&](std::string name, std::function<S(uint64_t)> make) {
-        Family f{std::move(name), {}, false, false};
-        for (const uint64_t n : sizes) f.sizes.push_back({n, [make, n] { return make(n); }});
-        return f;
-    };
-    return {
-        // k unit holes in a row, one quad apart: corridors one quad wide (F = 10k + 6).
-        family("corridors",
-               [](uint64_t n) {
-                   return S{make_disk_with_holes(static_cast<uint32_t>(n / 10), 1), {}};
-               }),
-        // A square grid with one single-triangle hole per 200 triangles.
-        family("smallholes",
-               [](uint64_t n) {
-                   const auto side = static_cast<uint32_t>(std::lround(std::sqrt(double(n) / 2)));
-                   S s{make_grid_disk(side, side), {}};
-                   remove_random_faces_as_holes(s.soup, s.soup.triangles.size() / 200, 7);
-                   return s;
-               }),
-        // One vertex of valence n.
-        family("fan",
-               [](uint64_t n) {
-                   return S{make_fan(static_cast<uint32_t>(n)), {}};
-               }),
-    };
+    // make_awkward picks each family's parameters for a triangle count (src/generators.cpp).
+    std::vector<Family> out;
+    for (const AwkwardFamily fam : kAwkwardFamilies) {
+        Family f{awkward_family_name(fam), {}, false, fam == AwkwardFamily::SlitWalls || fam == AwkwardFamily::SerpentineWalls};
+        for (const uint64_t n : {uint64_t{10000}, uint64_t{100000}, uint64_t{1000000}})
+            f.sizes.push_back({n, [fam, n] {
+                                   WalledMesh w = make_awkward(fam, static_cast<uint32_t>(n));
+                                   return Generated{std::move(w.soup), polyline_edges(w.walls)};
+                               }});
+        out.push_back(std::move(f));
+    }
+    return out;
 }
 
 }  // namespace singlestrip::bench

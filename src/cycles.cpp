@@ -2,12 +2,13 @@
 #include "singlestrip/cycles.hpp"
 
 #include <algorithm>
-#include <numeric>
+#include <bit>
 #include <cmath>
 #include <iomanip>
 #include <limits>
 #include <sstream>
 #include <string>
+#include <utility>
 
 #include "singlestrip/errors.hpp"
 #include "singlestrip/io.hpp"
@@ -17,33 +18,74 @@ namespace singlestrip {
 
 namespace {
 
-/// Breadth-first shortest path of faces from `from` to `to` avoiding face `avoid`; empty when
-/// there is none. The path includes both ends.
-// Shortest chain of edge-adjacent faces from `from` to `to` avoiding `avoid`; with `time`, only
-// through faces whose time is greater than `after`.
-std::vector<uint32_t> bfs_path(const Mesh& mesh, uint32_t from, uint32_t to, uint32_t avoid,
-                               const std::vector<uint32_t>* time = nullptr, uint32_t after = 0) {
-    std::vector<uint32_t> parent(mesh.num_faces(), kNone);
-    std::vector<uint32_t> queue{from};
-    parent[from] = from;
-    for (size_t head = 0; head < queue.size(); ++head) {
-        const uint32_t f = queue[head];
-        if (f == to) break;
-        for (uint32_t k = 0; k < 3; ++k) {
-            const uint32_t g = mesh.neighbor(Mesh::halfedge(f, k));
-            if (g == kNone || g == avoid || parent[g] != kNone) continue;
-            if (time && ((*time)[g] == kNone || (*time)[g] <= after)) continue;
-            parent[g] = f;
-            queue.push_back(g);
+/// Breadth-first searches over faces with arrays allocated once and reset by a stamp: a search
+/// costs the faces it visits, not O(F) (there is one or more per fundamental triangle).
+class FaceSearch {
+public:
+    explicit FaceSearch(const Mesh& mesh) : mesh_(mesh), stamp_(mesh.num_faces(), 0), parent_(mesh.num_faces(), kNone) {}
+
+    /// Shortest chain of edge-adjacent faces from `from` to `to` (both included) avoiding `avoid`;
+    /// with `time`, only through faces whose time is greater than `after`. Empty if there is none.
+    std::vector<uint32_t> path(uint32_t from, uint32_t to, uint32_t avoid, const std::vector<uint32_t>* time = nullptr,
+                               uint32_t after = 0) {
+        if (++current_ == 0) {  // stamps wrapped: forget them all once
+            std::fill(stamp_.begin(), stamp_.end(), 0);
+            current_ = 1;
         }
+        queue_.assign(1, from);
+        visit(from, from);
+        for (size_t head = 0; head < queue_.size() && !seen(to); ++head) {
+            const uint32_t f = queue_[head];
+            for (uint32_t k = 0; k < 3; ++k) {
+                const uint32_t g = mesh_.neighbor(Mesh::halfedge(f, k));
+                if (g == kNone || g == avoid || seen(g)) continue;
+                if (time && ((*time)[g] == kNone || (*time)[g] <= after)) continue;
+                visit(g, f);
+                queue_.push_back(g);
+            }
+        }
+        if (!seen(to)) return {};
+        std::vector<uint32_t> chain;
+        for (uint32_t f = to; f != from; f = parent_[f]) chain.push_back(f);
+        chain.push_back(from);
+        std::reverse(chain.begin(), chain.end());
+        return chain;
     }
-    if (parent[to] == kNone) return {};
-    std::vector<uint32_t> path;
-    for (uint32_t f = to; f != from; f = parent[f]) path.push_back(f);
-    path.push_back(from);
-    std::reverse(path.begin(), path.end());
-    return path;
-}
+
+private:
+    [[nodiscard]] bool seen(uint32_t f) const { return stamp_[f] == current_; }
+    void visit(uint32_t f, uint32_t parent) {
+        stamp_[f] = current_;
+        parent_[f] = parent;
+    }
+    const Mesh& mesh_;
+    std::vector<uint32_t> stamp_, parent_, queue_;
+    uint32_t current_ = 0;
+};
+
+/// A basis of the classes kept so far, in echelon form: rows_[c] is a class whose lowest set bit
+/// is c. Reducing a class touches only the words from its lowest bit on.
+class Z2Basis {
+public:
+    explicit Z2Basis(size_t dim) : rows_(dim) {}
+    /// Adds v if it is independent of the rows; false if it reduces to zero.
+    bool insert(std::vector<uint64_t> v) {
+        for (size_t w = 0; w < v.size(); ++w)
+            while (v[w] != 0) {
+                const size_t c = 64 * w + static_cast<size_t>(std::countr_zero(v[w]));
+                if (c >= rows_.size()) return false;  // no such bit: the classifier's bits are < dim
+                if (rows_[c].empty()) {
+                    rows_[c] = std::move(v);
+                    return true;
+                }
+                for (size_t k = w; k < v.size(); ++k) v[k] ^= rows_[c][k];
+            }
+        return false;
+    }
+
+private:
+    std::vector<std::vector<uint64_t>> rows_;
+};
 
 Point3 centroid(const StripArrays& a, uint32_t f) {
     const Triangle& t = a.faces[f];
@@ -68,203 +110,255 @@ bool shared_midpoint(const StripArrays& a, uint32_t f, uint32_t g, Point3& out) 
     return true;
 }
 
+/// What the candidate rules read: the mesh, the strip order both ways, and the take times
+/// (the strip positions when the fundamental triangles were replayed).
+struct StripView {
+    const Mesh& mesh;
+    const std::vector<uint32_t>& order;
+    const std::vector<uint32_t>& pos;
+    const std::vector<uint32_t>& take_time;
+};
+
+/// A candidate cycle through a fundamental triangle, as MESH faces. A strip segment (T and
+/// order[lo..hi]) stays a range until it is classified: it can be as long as the strip, and
+/// most candidates are never looked at.
+struct Candidate {
+    CycleSource source = CycleSource::StripSegment;
+    std::vector<uint32_t> faces;
+    bool lazy = false;
+    uint32_t t = kNone, lo = 0, hi = 0;
+    [[nodiscard]] size_t size() const { return lazy ? size_t{hi} - lo + 2 : faces.size(); }
+    const std::vector<uint32_t>& materialize(const std::vector<uint32_t>& order) {
+        if (!lazy) return faces;
+        faces.reserve(size());
+        faces.push_back(t);
+        for (uint32_t k = lo; k <= hi; ++k) faces.push_back(order[k]);
+        lazy = false;
+        return faces;
+    }
+};
+
+/// T's distinct neighbours, largest position first (D = [0], S = [1], Algorithm 3).
+std::vector<uint32_t> neighbors_by_position(const StripView& v, uint32_t t, uint32_t p) {
+    std::vector<uint32_t> nb;
+    for (uint32_t k = 0; k < 3; ++k) {
+        const uint32_t g = v.mesh.neighbor(Mesh::halfedge(t, k));
+        if (g != kNone && std::find(nb.begin(), nb.end(), g) == nb.end()) nb.push_back(g);
+    }
+    if (nb.size() < 2)
+        throw InternalError("fundamental cycles: fundamental triangle at position " + std::to_string(p) + " has fewer than two neighbours");
+    std::sort(nb.begin(), nb.end(), [&](uint32_t a, uint32_t b) { return v.pos[a] > v.pos[b]; });
+    return nb;
+}
+
+// (1) Algorithm 4, steepest ascent from S: the neighbour with the largest position not beyond
+// D's. Positions strictly increase (the strip successor is a neighbour): it terminates; empty
+// when it runs into T or exceeds `budget` faces.
+std::vector<uint32_t> steepest_ascent(const StripView& v, uint32_t t, uint32_t s, uint32_t d, size_t budget) {
+    std::vector<uint32_t> up{t, s};
+    for (uint32_t cur = s; cur != d;) {
+        uint32_t best = kNone;
+        for (uint32_t k = 0; k < 3; ++k) {
+            const uint32_t g = v.mesh.neighbor(Mesh::halfedge(cur, k));
+            if (g == kNone || g == t || v.pos[g] > v.pos[d]) continue;
+            if (best == kNone || v.pos[g] > v.pos[best]) best = g;
+        }
+        if (best == kNone || v.pos[best] <= v.pos[cur] || up.size() > budget) return {};
+        up.push_back(cur = best);
+    }
+    return up;
+}
+
+// (2) The mirror image, steepest descent from D: the neighbour with the smallest position not
+// below S's; a different shortcut, used when shorter or when (1) is rejected.
+std::vector<uint32_t> steepest_descent(const StripView& v, uint32_t t, uint32_t s, uint32_t d, size_t budget) {
+    std::vector<uint32_t> down{d};
+    for (uint32_t cur = d; cur != s;) {
+        uint32_t best = kNone;
+        for (uint32_t k = 0; k < 3; ++k) {
+            const uint32_t g = v.mesh.neighbor(Mesh::halfedge(cur, k));
+            if (g == kNone || g == t || v.pos[g] < v.pos[s]) continue;
+            if (best == kNone || v.pos[g] < v.pos[best]) best = g;
+        }
+        if (best == kNone || v.pos[best] >= v.pos[cur] || down.size() > budget) return {};
+        down.push_back(cur = best);
+    }
+    std::reverse(down.begin(), down.end());  // S .. D
+    down.insert(down.begin(), t);
+    return down;
+}
+
+// (5) The paper's parallel path, shortest: T's neighbours taken after T were joined, when T was
+// taken, by the faces still unstriped then (the faces taken later); a breadth-first path
+// through those closes the cycle. Independent of strip positions.
+std::vector<std::vector<uint32_t>> parallel_paths(const StripView& v, FaceSearch& search, uint32_t t, const std::vector<uint32_t>& nb) {
+    const uint32_t tt = v.take_time[t];
+    std::vector<uint32_t> later;
+    for (uint32_t g : nb)
+        if (v.take_time[g] != kNone && v.take_time[g] > tt) later.push_back(g);
+    std::vector<std::vector<uint32_t>> paths;
+    for (size_t x = 0; x < later.size(); ++x)
+        for (size_t y = x + 1; y < later.size(); ++y) {
+            std::vector<uint32_t> path = search.path(later[x], later[y], t, &v.take_time, tt);
+            if (path.empty()) continue;
+            path.insert(path.begin(), t);
+            paths.push_back(std::move(path));
+        }
+    return paths;
+}
+
+/// Every candidate of the fundamental triangle at position p, shortest first (ties in the order
+/// of the header's list).
+std::vector<Candidate> candidates_for(const StripView& v, FaceSearch& search, uint32_t p) {
+    const uint32_t t = v.order[p];
+    const std::vector<uint32_t> nb = neighbors_by_position(v, t, p);
+    const uint32_t d = nb[0], s = nb[1];
+    // The breadth-first candidates first: the walks (1) and (2) may follow the strip for as long
+    // as it is, so they stop at a few times the shortest of those (they would not be kept).
+    std::vector<uint32_t> around = search.path(s, d, t);  // (4)
+    if (!around.empty()) around.insert(around.begin(), t);
+    std::vector<std::vector<uint32_t>> parallel = parallel_paths(v, search, t, nb);
+    size_t shortest = around.empty() ? v.order.size() : around.size();
+    for (const auto& path : parallel) shortest = std::min(shortest, path.size());
+    const size_t budget = shortest >= v.order.size() ? v.order.size() : 4 * shortest + 64;
+
+    std::vector<Candidate> cand;
+    auto add = [&](CycleSource source, std::vector<uint32_t> faces) {
+        if (!faces.empty()) cand.push_back({source, std::move(faces)});
+    };
+    add(CycleSource::SteepestAscent, steepest_ascent(v, t, s, d, budget));
+    add(CycleSource::SteepestDescent, steepest_descent(v, t, s, d, budget));
+    // (3) Strip cycles: T and the strip segment between two neighbours on the same side of T
+    // (§4: "a strip segment from the outedge neighbor of T to the third-edge neighbor").
+    for (size_t x = 0; x < nb.size(); ++x)
+        for (size_t y = x + 1; y < nb.size(); ++y) {
+            const uint32_t lo = std::min(v.pos[nb[x]], v.pos[nb[y]]), hi = std::max(v.pos[nb[x]], v.pos[nb[y]]);
+            if (lo < p && p < hi) continue;  // the segment would pass through T
+            Candidate c;
+            c.lazy = true;
+            c.t = t;
+            c.lo = lo;
+            c.hi = hi;
+            cand.push_back(std::move(c));
+        }
+    add(CycleSource::ShortestPath, std::move(around));
+    for (auto& path : parallel) add(CycleSource::ParallelPath, std::move(path));
+    if (cand.empty())
+        throw InternalError("fundamental cycles: no path around the fundamental triangle at position " + std::to_string(p));
+    // Shortest first, ties in candidate order. (A stable insertion sort: a handful of
+    // candidates; std::stable_sort's temporary buffer trips ASan's alloc-dealloc check in
+    // GCC 12's libstdc++.)
+    for (size_t x = 1; x < cand.size(); ++x)
+        for (size_t y = x; y > 0 && cand[y].size() < cand[y - 1].size(); --y) std::swap(cand[y], cand[y - 1]);
+    return cand;
+}
+
+/// Class bits of the tree–cotree generators, shortest generator first (ties in bit order).
+std::vector<size_t> generators_by_length(const HomologyClassifier& classifier) {
+    std::vector<std::pair<size_t, size_t>> by_length(classifier.dimension());  // (length, bit)
+    for (size_t j = 0; j < by_length.size(); ++j) by_length[j] = {classifier.generator_length(j), j};
+    std::sort(by_length.begin(), by_length.end());
+    std::vector<size_t> bits(by_length.size());
+    for (size_t k = 0; k < bits.size(); ++k) bits[k] = by_length[k].second;
+    return bits;
+}
+
+/// The j-th unit vector of `dim` bits: the class of tree–cotree generator j.
+std::vector<uint64_t> unit_class(size_t dim, size_t j) {
+    std::vector<uint64_t> v((dim + 63) / 64, 0);
+    v[j / 64] = uint64_t{1} << (j % 64);
+    return v;
+}
+
+/// Face -> position in `order`. \throw InternalError if `order` is not a permutation of the faces.
+std::vector<uint32_t> positions_of(const std::vector<uint32_t>& order, uint32_t nf) {
+    if (order.size() != nf) throw InternalError("fundamental cycles: strip order does not cover the mesh");
+    std::vector<uint32_t> pos(nf, kNone);
+    for (uint32_t i = 0; i < nf; ++i) {
+        const uint32_t f = order[i];
+        if (f >= nf || pos[f] != kNone) throw InternalError("fundamental cycles: strip order is not a permutation");
+        pos[f] = i;
+    }
+    return pos;
+}
+
 }  // namespace
 
 Cycles compute_fundamental_cycles(const StripResult& result) {
     const Mesh& mesh = result.mesh;
     const uint32_t nf = mesh.num_faces();
-    if (result.order.size() != nf) throw InternalError("fundamental cycles: strip order does not cover the mesh");
-    std::vector<uint32_t> pos(nf, kNone);
-    for (uint32_t i = 0; i < nf; ++i) {
-        const uint32_t f = result.order[i];
-        if (f >= nf || pos[f] != kNone) throw InternalError("fundamental cycles: strip order is not a permutation");
-        pos[f] = i;
-    }
-    auto neighbor_ok = [&](uint32_t g, uint32_t t) { return g != kNone && g != t; };
+    const std::vector<uint32_t> pos = positions_of(result.order, nf);
     // The growth builder records its fundamental triangles and when each face was taken; any
     // other strip order gets them by replay, and its positions serve as take times: the faces
     // after a fundamental triangle are then exactly the region it was removed from.
     const bool recorded = result.take_time.size() == nf;
     const std::vector<uint32_t> fundamental =
         recorded ? result.fundamental_positions : replay_fundamental_positions(mesh, result.order);
-    const std::vector<uint32_t>& take_time = recorded ? result.take_time : pos;
-
-    // Per fundamental triangle: candidate cycles as chains of MESH faces, shortest first.
-    struct Candidate {
-        CycleSource source = CycleSource::StripSegment;
-        std::vector<uint32_t> faces;
-    };
-    const size_t n = fundamental.size();
-    std::vector<std::vector<Candidate>> candidates(n);
-    for (size_t i = 0; i < n; ++i) {
-        const uint32_t p = fundamental[i];
+    for (const uint32_t p : fundamental)
         if (p >= nf) throw InternalError("fundamental cycles: fundamental position out of range");
-        const uint32_t t = result.order[p];
-        std::vector<uint32_t> nb;
-        for (uint32_t k = 0; k < 3; ++k) {
-            const uint32_t g = mesh.neighbor(Mesh::halfedge(t, k));
-            if (g != kNone && std::find(nb.begin(), nb.end(), g) == nb.end()) nb.push_back(g);
-        }
-        if (nb.size() < 2)
-            throw InternalError("fundamental cycles: fundamental triangle at position " + std::to_string(p) +
-                                " has fewer than two neighbours");
-        std::sort(nb.begin(), nb.end(), [&](uint32_t a, uint32_t b) { return pos[a] > pos[b]; });
-        const uint32_t d = nb[0];  // destination: largest position (Algorithm 3)
-        const uint32_t s = nb[1];  // source: second largest
-
-        // (1) Algorithm 4, steepest ascent: the neighbour with the largest position not beyond
-        // D's. Positions strictly increase (the strip successor is a neighbour): terminates.
-        std::vector<uint32_t> up{t, s};
-        for (uint32_t cur = s; cur != d && !up.empty();) {
-            uint32_t best = kNone;
-            for (uint32_t k = 0; k < 3; ++k) {
-                const uint32_t g = mesh.neighbor(Mesh::halfedge(cur, k));
-                if (!neighbor_ok(g, t) || pos[g] > pos[d]) continue;
-                if (best == kNone || pos[g] > pos[best]) best = g;
-            }
-            if (best == kNone || pos[best] <= pos[cur]) up.clear();  // S before T: ran into T
-            else up.push_back(cur = best);
-        }
-        // (2) The mirror image, steepest descent from D: the neighbour with the smallest position
-        // not below S's; a different shortcut, used when shorter or when (1) is rejected.
-        std::vector<uint32_t> down{d};
-        for (uint32_t cur = d; cur != s && !down.empty();) {
-            uint32_t best = kNone;
-            for (uint32_t k = 0; k < 3; ++k) {
-                const uint32_t g = mesh.neighbor(Mesh::halfedge(cur, k));
-                if (!neighbor_ok(g, t) || pos[g] < pos[s]) continue;
-                if (best == kNone || pos[g] < pos[best]) best = g;
-            }
-            if (best == kNone || pos[best] >= pos[cur]) down.clear();
-            else down.push_back(cur = best);
-        }
-        if (!down.empty()) {
-            std::reverse(down.begin(), down.end());  // S .. D
-            down.insert(down.begin(), t);
-        }
-        // (3) Strip cycles: T and the strip segment between two neighbours on the same side of T
-        // (§4: "a strip segment from the outedge neighbor of T to the third-edge neighbor").
-        auto& cand = candidates[i];
-        if (!up.empty()) cand.push_back({CycleSource::SteepestAscent, std::move(up)});
-        if (!down.empty()) cand.push_back({CycleSource::SteepestDescent, std::move(down)});
-        for (size_t x = 0; x < nb.size(); ++x)
-            for (size_t y = x + 1; y < nb.size(); ++y) {
-                const uint32_t lo = std::min(pos[nb[x]], pos[nb[y]]), hi = std::max(pos[nb[x]], pos[nb[y]]);
-                if (lo < p && p < hi) continue;  // the segment would pass through T
-                std::vector<uint32_t> c{t};
-                for (uint32_t k = lo; k <= hi; ++k) c.push_back(result.order[k]);
-                cand.push_back({CycleSource::StripSegment, std::move(c)});
-            }
-        // (4) A breadth-first shortest path from S to D avoiding T (often around one vertex of T,
-        // so null-homologous, but a candidate nonetheless).
-        std::vector<uint32_t> around = bfs_path(mesh, s, d, t);
-        if (!around.empty()) {
-            around.insert(around.begin(), t);
-            cand.push_back({CycleSource::ShortestPath, std::move(around)});
-        }
-        // (5) The paper's parallel path, shortest: T's neighbours taken after T were joined,
-        // when T was taken, by the faces still unstriped then (the faces taken later); a
-        // breadth-first path through those closes the cycle. Independent of strip positions.
-        {
-            const uint32_t tt = take_time[t];
-            std::vector<uint32_t> later;
-            for (uint32_t g : nb)
-                if (take_time[g] != kNone && take_time[g] > tt) later.push_back(g);
-            for (size_t x = 0; x < later.size(); ++x)
-                for (size_t y = x + 1; y < later.size(); ++y) {
-                    std::vector<uint32_t> path = bfs_path(mesh, later[x], later[y], t, &take_time, tt);
-                    if (path.empty()) continue;
-                    path.insert(path.begin(), t);
-                    cand.push_back({CycleSource::ParallelPath, std::move(path)});
-                }
-        }
-        if (cand.empty())
-            throw InternalError("fundamental cycles: no path around the fundamental triangle at position " +
-                                std::to_string(p));
-        // Shortest first, ties in candidate order. (A stable insertion sort: a handful of
-        // candidates; std::stable_sort's temporary buffer trips ASan's alloc-dealloc check in
-        // GCC 12's libstdc++.)
-        for (size_t x = 1; x < cand.size(); ++x)
-            for (size_t y = x; y > 0 && cand[y].faces.size() < cand[y - 1].faces.size(); --y) std::swap(cand[y], cand[y - 1]);
-    }
+    const StripView view{mesh, result.order, pos, recorded ? result.take_time : pos};
 
     // Shortcuts and strip segments can be null-homologous or dependent (a steepest ascent that
     // closes around one vertex of T; with deferred islands spliced in, strip positions are not
     // the order in which faces were taken, so a segment may miss the handle). Keep, per
     // fundamental triangle in strip order, the shortest candidate independent in H1(M; Z2) of
     // those kept so far; fill the slots left with the shortest independent tree–cotree generators.
-    Cycles out;
     const HomologyClassifier classifier(mesh);
     const size_t dim = classifier.dimension();
-    std::vector<std::vector<uint64_t>> basis(dim);  // basis[c]: a class whose lowest set bit is c
-    auto insert = [&](std::vector<uint64_t> v) {
-        for (;;) {
-            size_t c = 0;
-            while (c < 64 * v.size() && !(v[c / 64] >> (c % 64) & 1u)) ++c;
-            if (c >= dim) return false;  // reduced to zero: dependent
-            if (basis[c].empty()) {
-                basis[c] = std::move(v);
-                return true;
-            }
-            for (size_t k = 0; k < v.size(); ++k) v[k] ^= basis[c][k];
-        }
-    };
-    std::vector<Candidate> chosen(n);
+    Z2Basis basis(dim);
+    auto keep = [&](const std::vector<uint32_t>& faces) { return basis.insert(classifier.classify(faces)); };
+    FaceSearch search(mesh);
+    std::vector<Candidate> chosen(fundamental.size());
     std::vector<size_t> pending;
-    for (size_t i = 0; i < n; ++i) {
-        bool found = false;
-        for (Candidate& c : candidates[i])
-            if (insert(classifier.classify(c.faces))) {
-                chosen[i] = std::move(c);
-                found = true;
-                break;
+    size_t rank = 0;
+    for (size_t i = 0, j = 0; i < fundamental.size(); i = j) {
+        // A triangle counted twice (a first face joining loops) fills both slots from one list.
+        while (j < fundamental.size() && fundamental[j] == fundamental[i]) ++j;
+        std::vector<Candidate> cand = candidates_for(view, search, fundamental[i]);
+        size_t next = 0;
+        for (size_t slot = i; slot < j; ++slot) {
+            while (next < cand.size() && !keep(cand[next].materialize(result.order))) ++next;
+            if (next == cand.size()) {
+                pending.push_back(slot);
+                continue;
             }
-        if (!found) pending.push_back(i);
+            chosen[slot] = std::move(cand[next++]);
+            ++rank;
+        }
     }
     // Slots left, and the rank still missing: constraint edges change which faces are
     // fundamental (a constraint loop around a handle makes one cycle "visible" only to the
     // surface), so the surface's 2g+h-1 may exceed the fundamental triangles met. Fill with the
     // shortest independent tree–cotree generators; drop slots that cannot be filled (more
     // fundamental triangles than dim H1, e.g. an interior seed): the cycles are the surface's.
-    size_t rank = 0;
-    for (size_t i = 0; i < n; ++i) rank += !chosen[i].faces.empty();
-    std::vector<Candidate> extra;
+    // Generators are built only when kept; their classes are unit vectors (tree_cotree.hpp).
     if (rank < dim) {
-        std::vector<std::vector<uint32_t>> gens = tree_cotree_generators(mesh);
-        {  // shortest first, ties in generator order (see above for why not std::stable_sort)
-            std::vector<size_t> by_size(gens.size());
-            std::iota(by_size.begin(), by_size.end(), size_t{0});
-            std::sort(by_size.begin(), by_size.end(), [&](size_t u, size_t v) {
-                return gens[u].size() != gens[v].size() ? gens[u].size() < gens[v].size() : u < v;
-            });
-            std::vector<std::vector<uint32_t>> sorted;
-            sorted.reserve(gens.size());
-            for (size_t k : by_size) sorted.push_back(std::move(gens[k]));
-            gens = std::move(sorted);
-        }
+        const std::vector<size_t> gens = generators_by_length(classifier);
+        auto keep_generator = [&](size_t j) { return basis.insert(unit_class(dim, j)); };
         size_t next = 0;
         for (size_t i : pending) {
-            while (next < gens.size() && !insert(classifier.classify(gens[next]))) ++next;
+            while (next < gens.size() && !keep_generator(gens[next])) ++next;
             if (next == gens.size()) break;
-            chosen[i] = {CycleSource::TreeCotree, std::move(gens[next++])};
+            chosen[i] = {CycleSource::TreeCotree, classifier.generator(gens[next++])};
             ++rank;
         }
         for (; rank < dim && next < gens.size(); ++next)
-            if (insert(classifier.classify(gens[next]))) {
-                extra.push_back({CycleSource::TreeCotree, std::move(gens[next])});
+            if (keep_generator(gens[next])) {
+                chosen.push_back({CycleSource::TreeCotree, classifier.generator(gens[next])});
                 ++rank;
             }
     }
-    for (Candidate& c : extra) chosen.push_back(std::move(c));
 
+    Cycles out;
     const StripArrays arrays = strip_arrays(result);
-    for (size_t i = 0; i < chosen.size(); ++i) {
-        if (chosen[i].faces.empty()) continue;  // a slot no independent cycle could fill
+    for (const Candidate& c : chosen) {
+        if (c.faces.empty()) continue;  // a slot no independent cycle could fill
         std::vector<uint32_t> cycle;
-        for (uint32_t f : chosen[i].faces) cycle.push_back(pos[f]);
+        cycle.reserve(c.faces.size());
+        for (uint32_t f : c.faces) cycle.push_back(pos[f]);
         out.lengths.push_back(cycle_length(arrays, cycle));
         out.cycles.push_back(std::move(cycle));
-        out.sources.push_back(chosen[i].source);
+        out.sources.push_back(c.source);
     }
     return out;
 }

@@ -103,23 +103,47 @@ TriangleSoup drop_faces(const TriangleSoup& in, const std::vector<char>& removed
     return out;
 }
 
-/// Triangulates the convex polygon `ring` (CCW as it should face) by halving: each level cuts
-/// off the triangles (p[i], p[i+1], p[i+2]) for even i and keeps every other vertex, so no
-/// vertex gains more than two edges per level (O(log n) valence instead of a fan's n).
-void triangulate_by_halving(std::vector<uint32_t> ring, std::vector<Triangle>& out) {
-    while (ring.size() >= 3) {
-        const size_t n = ring.size();
-        if (n == 3) {
-            out.push_back({ring[0], ring[1], ring[2]});
-            return;
-        }
-        std::vector<uint32_t> kept;
-        for (size_t i = 0; i < n; i += 2) {
-            kept.push_back(ring[i]);
-            if (i + 1 < n) out.push_back({ring[i], ring[i + 1], ring[(i + 2) % n]});
-        }
-        ring = std::move(kept);
+/// Adds `m` points on a circle of radius r in the plane z=0, the first at angle 0; returns the
+/// index of the first.
+uint32_t add_circle(TriangleSoup& s, uint32_t m, double r) {
+    const uint32_t first = static_cast<uint32_t>(s.points.size());
+    for (uint32_t j = 0; j < m; ++j) {
+        const double a = 2 * kPi * j / m;
+        s.points.push_back({r * std::cos(a), r * std::sin(a), 0});
     }
+    return first;
+}
+
+/// Closes the circle of n points starting at `first` (radius 1, z=0, CCW from +z) with a disk
+/// facing -z: rings of halving size (each max(3, ceil(n/2))) zipped to the previous one by angle,
+/// then one triangle. Radial gaps follow the ring spacing, so every triangle is well shaped and
+/// every cap vertex has a small valence (a polygon triangulated from its own corners alone would
+/// have slivers of width ~1/n^2, which no double-precision midpoint check can place).
+void add_ring_cap(TriangleSoup& s, uint32_t first, uint32_t n) {
+    double r = 1.0;
+    // Reversed corners: the cap is CW seen from +z, i.e. outward (down).
+    auto add = [&](uint32_t a, uint32_t b, uint32_t c) { s.triangles.push_back({a, c, b}); };
+    while (n > 3) {
+        const uint32_t m = std::max(3u, (n + 1) / 2);
+        r *= 1.0 - 0.3 * 2 * kPi / n;
+        const uint32_t inner = add_circle(s, m, r);
+        // Zip the rings from the aligned pair (outer 0, inner 0): advance the ring whose next point
+        // comes first by angle; n + m triangles close the band.
+        uint32_t i = 0, j = 0;
+        while (i < n || j < m) {
+            const bool outer_next = j == m || (i < n && uint64_t{i + 1} * m <= uint64_t{j + 1} * n);
+            if (outer_next) {
+                add(inner + j % m, first + i, first + (i + 1) % n);
+                ++i;
+            } else {
+                add(inner + j, first + i % n, inner + (j + 1) % m);
+                ++j;
+            }
+        }
+        first = inner;
+        n = m;
+    }
+    add(first, first + 1, first + 2);
 }
 
 uint32_t rounded(double x) {
@@ -554,11 +578,7 @@ TriangleSoup make_cone(uint32_t k, bool capped) {
         s.points.push_back({std::cos(a), std::sin(a), 0});
     }
     for (uint32_t i = 0; i < k; ++i) s.triangles.push_back({0, 1 + i, 1 + (i + 1) % k});
-    if (capped) {
-        std::vector<uint32_t> ring;  // clockwise seen from +z: the cap faces down (outward)
-        for (uint32_t i = k; i >= 1; --i) ring.push_back(i);
-        triangulate_by_halving(std::move(ring), s.triangles);
-    }
+    if (capped) add_ring_cap(s, 1, k);
     return s;
 }
 
@@ -615,7 +635,7 @@ WalledMesh make_awkward(AwkwardFamily family, uint32_t triangles) {
         case AwkwardFamily::OpenCone:
             return {make_cone(std::max(3u, rounded(f)), false), {}};
         case AwkwardFamily::ClosedCone:
-            return {make_cone(std::max(3u, rounded(f / 2 + 1)), true), {}};
+            return {make_cone(std::max(3u, rounded(f / 4)), true), {}};  // F ~ 4k
     }
     throw RequestError("generator: unknown awkward family");
 }

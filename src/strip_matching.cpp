@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -48,6 +49,8 @@ private:
     uint32_t pins_[2] = {kNone, kNone};  ///< source face (or seed) and target face
     uint32_t num_pins_ = 0;
     StripStats stats_;
+    std::optional<Mesh> pre_merge_;  ///< the mesh before the joins, kept when paths remain
+    uint32_t pre_merge_splits_ = 0;
     // Augmenting search, per face: the outer face it was reached from and the two edges used.
     std::vector<uint32_t> aug_prev_, aug_matched_, aug_unmatched_, aug_queue_;
 
@@ -68,14 +71,21 @@ private:
     SplitResult split(uint32_t h);
     void split_ears();
     void set_quotas();
+    std::vector<uint32_t> dual_bridges() const;
+    static constexpr uint32_t kMinBridgeSide = 16;
+    void split_bridges();
     void match_patterned();
     bool augment_from(uint32_t u, std::vector<uint32_t>& stamp, uint32_t mark, size_t budget);
     void settle_leftovers();
     bool repair_in_balls(std::vector<uint32_t>& short_faces, size_t ball);
+    bool repair_ball(const std::vector<uint32_t>& short_faces, size_t ball);
+    static constexpr size_t kBallOneByOne = 8192;
+    std::vector<uint32_t> ball_local_;
     void label_structures();
     void merge_all();
     void reduce_loops();
-    bool flip_ring(uint32_t v, std::vector<uint32_t>& ring);
+    bool flip_alternating(uint32_t f1);
+    bool meets_first(uint32_t from, uint32_t back, uint32_t good, uint32_t bad) const;
     bool try_merge(uint32_t h, bool allow_split);
     void join(uint32_t h, uint32_t a, uint32_t b, bool cycle, bool pinned);
     void rotate_into(uint32_t h, uint32_t a, uint32_t b);
@@ -167,6 +177,59 @@ void MatchingBuilder::split_ears() {
     }
 }
 
+// Passable edges whose removal disconnects the faces (bridges of the dual graph), by an
+// iterative lowpoint search. A strip crosses such an edge exactly once, so the two sides must each
+// be covered by a path ending at it; split, the edge becomes two crossings (the four children
+// form a ring across it), which removes that parity constraint: a serpentine corridor of odd
+// length between walls has no 2-factor until its one-edge gaps are split.
+std::vector<uint32_t> MatchingBuilder::dual_bridges() const {
+    const uint32_t nf = mesh_.num_faces();
+    std::vector<uint32_t> order(nf, kNone), low(nf, 0), parent_edge(nf, kNone), size(nf, 1), bridges;
+    struct Frame {
+        uint32_t f, k;
+    };
+    std::vector<Frame> stack;
+    uint32_t time = 0;
+    for (uint32_t r = 0; r < nf; ++r) {
+        if (order[r] != kNone) continue;
+        order[r] = low[r] = time++;
+        stack.push_back({r, 0});
+        while (!stack.empty()) {
+            Frame& fr = stack.back();
+            if (fr.k < 3) {
+                const uint32_t h = 3 * fr.f + fr.k++;
+                if (!passable(h) || mesh_.twin(h) == parent_edge[fr.f]) continue;
+                const uint32_t g = mesh_.neighbor(h);
+                if (order[g] == kNone) {
+                    order[g] = low[g] = time++;
+                    parent_edge[g] = h;
+                    stack.push_back({g, 0});
+                } else {
+                    low[fr.f] = std::min(low[fr.f], order[g]);
+                }
+                continue;
+            }
+            const uint32_t f = fr.f;
+            stack.pop_back();
+            if (parent_edge[f] == kNone) continue;
+            const uint32_t p = Mesh::face(parent_edge[f]);
+            low[p] = std::min(low[p], low[f]);
+            size[p] += size[f];
+            // A small side (a spike, a pendant ring) is better joined as a loop later.
+            if (low[f] > order[p] && std::min(size[f], nf - size[f]) >= kMinBridgeSide) bridges.push_back(parent_edge[f]);
+        }
+    }
+    return bridges;
+}
+
+void MatchingBuilder::split_bridges() {
+    for (uint32_t h : dual_bridges()) {
+        const uint32_t f = Mesh::face(h), g = mesh_.neighbor(h);
+        if (degree(f) < 2 || degree(g) < 2 || f == pins_[0] || f == pins_[1] || g == pins_[0] || g == pins_[1]) continue;
+        split(h);
+    }
+}
+
 // Matched edges wanted per face: passable edges beyond the two the strip crosses (one crossed
 // edge for a pinned face, whose other link is the virtual face).
 void MatchingBuilder::set_quotas() {
@@ -187,8 +250,37 @@ void MatchingBuilder::set_quotas() {
 // alternate and the GL strip needs no swap there.
 void MatchingBuilder::match_patterned() {
     const uint32_t nf = mesh_.num_faces();
-    std::vector<uint32_t> pref(nf, kNone), queue;
+    std::vector<uint32_t> pref(nf, kNone), queue, critical;
     std::vector<uint8_t> seen(nf, 0);
+    // Karp-Sipser: a face left with one free neighbour takes it at once, before the pattern
+    // asks, so few faces are left short (each costs an augmenting path, which breaks the pattern).
+    std::vector<uint8_t> free_n(nf, 0);
+    auto wants = [&](uint32_t h) { return passable(h) && !matched_[h] && quota_[mesh_.neighbor(h)] > 0; };
+    for (uint32_t f = 0; f < nf; ++f)
+        if (quota_[f] > 0)
+            for (uint32_t h = 3 * f; h < 3 * f + 3; ++h) free_n[f] += wants(h);
+    for (uint32_t f = 0; f < nf; ++f)
+        if (quota_[f] > 0 && free_n[f] == 1) critical.push_back(f);
+    auto match = [&](uint32_t h) {
+        set_pair(matched_, h, 1);
+        for (uint32_t x : {Mesh::face(h), mesh_.neighbor(h)}) {
+            if (--quota_[x] > 0) continue;
+            for (uint32_t e = 3 * x; e < 3 * x + 3; ++e) {
+                if (!passable(e)) continue;
+                const uint32_t y = mesh_.neighbor(e);
+                if (quota_[y] > 0 && free_n[y] > 0 && --free_n[y] == 1) critical.push_back(y);
+            }
+        }
+    };
+    auto drain = [&] {
+        while (!critical.empty()) {
+            const uint32_t x = critical.back();
+            critical.pop_back();
+            for (uint32_t e = 3 * x; e < 3 * x + 3 && quota_[x] > 0; ++e)
+                if (wants(e)) match(e);
+        }
+    };
+    drain();
     queue.reserve(nf);
     for (uint32_t s = 0; s < nf; ++s) {
         if (seen[s]) continue;
@@ -198,12 +290,7 @@ void MatchingBuilder::match_patterned() {
             const uint32_t f = queue[head];
             for (uint32_t i = 0; i < 3 && quota_[f] > 0; ++i) {
                 const uint32_t h = i == 0 && pref[f] != kNone ? pref[f] : 3 * f + (i + (pref[f] == kNone ? 0 : pref[f] % 3)) % 3;
-                if (!passable(h) || matched_[h]) continue;
-                const uint32_t g = mesh_.neighbor(h);
-                if (quota_[g] == 0) continue;
-                set_pair(matched_, h, 1);
-                --quota_[f];
-                --quota_[g];
+                if (wants(h)) match(h), drain();
             }
             uint32_t m = kNone;  // the edge this face does not cross
             for (uint32_t k = 0; k < 3; ++k)
@@ -275,10 +362,27 @@ struct keep_matching {
 // Maximum matching (Edmonds' blossoms, Boost.Graph) on the faces within `ball` faces of each
 // short face, starting from the current matching; faces matched across the ball's rim stay as
 // they are. Where a perfect matching exists (closed surfaces) this finds the alternating paths
-// through odd cycles that the plain search misses. True if some face was repaired.
+// through odd cycles that the plain search misses. True if a ball was cut off by its size (a
+// larger one might still help); otherwise the matching is maximum where faces are still short.
 bool MatchingBuilder::repair_in_balls(std::vector<uint32_t>& short_faces, size_t ball) {
-    const uint32_t nf = mesh_.num_faces();
-    std::vector<uint32_t> local(nf, kNone), faces, queue;
+    bool truncated = false;
+    ball_local_.assign(mesh_.num_faces(), kNone);
+    if (ball > kBallOneByOne) {  // large balls overlap: one search over their union
+        truncated = repair_ball(short_faces, ball);
+    } else {
+        for (uint32_t s : std::vector<uint32_t>(short_faces))
+            if (quota_[s] > 0) truncated |= repair_ball({s}, ball);
+    }
+    std::erase_if(short_faces, [&](uint32_t f) { return quota_[f] == 0; });
+    return truncated;
+}
+
+// Edmonds on the union of the balls around `short_faces` (repair_in_balls()); true if a ball was
+// cut off by its size.
+bool MatchingBuilder::repair_ball(const std::vector<uint32_t>& short_faces, size_t ball) {
+    std::vector<uint32_t>& local = ball_local_;  // kNone outside the ball, on entry and exit
+    std::vector<uint32_t> faces, queue;
+    bool truncated = false;
     auto want_one = [&](uint32_t f) { return static_cast<int>(degree(f)) - (2 - vlink_[f]) == 1; };
     for (uint32_t s : short_faces) {
         if (local[s] != kNone) continue;
@@ -291,6 +395,7 @@ bool MatchingBuilder::repair_in_balls(std::vector<uint32_t>& short_faces, size_t
                 if (local[g] == kNone) local[g] = 0, queue.push_back(g);
             }
         faces.insert(faces.end(), queue.begin(), queue.end());
+        truncated |= queue.size() >= ball;
     }
     // Keep faces that take exactly one matched edge and whose partner is inside too.
     std::vector<uint32_t> kept;
@@ -334,9 +439,7 @@ bool MatchingBuilder::repair_in_balls(std::vector<uint32_t>& short_faces, size_t
             }
     }
     for (uint32_t f : kept) local[f] = kNone;
-    const size_t before = short_faces.size();
-    std::erase_if(short_faces, [&](uint32_t f) { return quota_[f] == 0; });
-    return short_faces.size() < before;
+    return truncated;
 }
 
 // Faces the matching left short: local augmenting searches with a growing budget; what is still
@@ -350,14 +453,18 @@ void MatchingBuilder::settle_leftovers() {
     for (uint32_t f = 0; f < nf; ++f)
         if (quota_[f] > 0) short_faces.push_back(f);
     uint32_t mark = 0;
-    for (size_t budget : {size_t{64}, size_t{1024}, size_t{16384}}) {
+    for (size_t budget : {size_t{64}, size_t{1024}}) {
         for (uint32_t f : short_faces)
             while (quota_[f] > 0 && augment_from(f, stamp, ++mark, budget)) {
             }
         std::erase_if(short_faces, [&](uint32_t f) { return quota_[f] == 0; });
     }
-    for (size_t ball : {size_t{512}, size_t{8192}, size_t{131072}})
-        if (!short_faces.empty()) repair_in_balls(short_faces, ball);
+    // Edmonds on balls: each face's own, then (for a few faces only: it costs O(ball) per
+    // augmenting path) one search over the union of larger balls.
+    for (size_t ball : {size_t{512}, kBallOneByOne, size_t{32768}}) {
+        if (short_faces.empty() || (ball > kBallOneByOne && short_faces.size() > 16)) break;
+        if (!repair_in_balls(short_faces, ball)) break;
+    }
     for (uint32_t h = 0; h < 3 * nf; ++h) used_[h] = passable(h) && !matched_[h];
     for (uint32_t f : short_faces)
         for (uint32_t k = 0; k < 3 && quota_[f] > 0; ++k)
@@ -386,18 +493,17 @@ void MatchingBuilder::label_structures() {
             const uint32_t f = stack.back();
             stack.pop_back();
             ends |= hdeg(f) < 2;
-            std::vector<uint32_t> next;
+            auto visit = [&](uint32_t g) {
+                if (sid_[g] != kNone) return;
+                sid_[g] = id;
+                stack.push_back(g);
+            };
             for (uint32_t k = 0; k < 3; ++k)
-                if (used_[3 * f + k]) next.push_back(mesh_.neighbor(3 * f + k));
+                if (used_[3 * f + k]) visit(mesh_.neighbor(3 * f + k));
             if (vlink_[f]) {
                 pinned = true;
-                for (uint32_t i = 0; i < num_pins_; ++i) next.push_back(pins_[i]);
+                for (uint32_t i = 0; i < num_pins_; ++i) visit(pins_[i]);
             }
-            for (uint32_t g : next)
-                if (sid_[g] == kNone) {
-                    sid_[g] = id;
-                    stack.push_back(g);
-                }
         }
         uf_.push_back(id);
         cycle_.push_back(!ends && !(pinned && num_pins_ == 1));
@@ -406,46 +512,97 @@ void MatchingBuilder::label_structures() {
     stats_.loops = static_cast<uint32_t>(uf_.size());
 }
 
-// The faces around interior vertex v, as the half-edges leaving v (one per face, in turn);
-// across prev(ring[i]) lies the next face. The ring is alternating when those edges are crossed
-// and matched in turn. If each crossed edge lies in a different loop, swapping crossed and matched
-// edges joins all those loops into one for free (each face keeps one matched edge).
-bool MatchingBuilder::flip_ring(uint32_t v, std::vector<uint32_t>& ring) {
-    constexpr uint32_t kMaxRing = 12;
-    ring.clear();
-    const uint32_t h0 = mesh_.vertex_halfedge(v);
-    if (h0 == kNone) return false;
-    const uint8_t first = used_[Mesh::prev(h0)];
-    for (uint32_t h = h0;;) {
-        const uint32_t e = Mesh::prev(h);
-        if (!passable(e) || vlink_[Mesh::face(h)] || ring.size() == kMaxRing) return false;
-        if (used_[e] != (first ^ (ring.size() % 2)) || used_[e] == matched_[e]) return false;
-        ring.push_back(h);
-        h = mesh_.twin(e);
-        if (h == h0) break;
+// Walking loop from face `from` away from face `back`: true if `good` comes before `bad`
+// (within a bound; false past it).
+bool MatchingBuilder::meets_first(uint32_t from, uint32_t back, uint32_t good, uint32_t bad) const {
+    uint32_t prev = back, cur = from;
+    for (uint32_t step = 0; step < 256; ++step) {
+        if (cur == good) return true;
+        if (cur == bad) return false;
+        uint32_t next = kNone;
+        for (uint32_t h = 3 * cur; h < 3 * cur + 3; ++h)
+            if (used_[h] && mesh_.neighbor(h) != prev) next = mesh_.neighbor(h);
+        if (next == kNone) return false;
+        prev = cur;
+        cur = next;
     }
-    if (ring.size() % 2 != 0) return false;
-    std::vector<uint32_t> roots;
-    for (size_t i = first ? 0 : 1; i < ring.size(); i += 2) {
-        const uint32_t r = find(sid_[Mesh::face(ring[i])]);
-        if (!cycle_[r] || pinned_[r] || std::find(roots.begin(), roots.end(), r) != roots.end()) return false;
-        roots.push_back(r);
-    }
-    for (uint32_t h : ring) {
-        const uint32_t e = Mesh::prev(h);
-        set_pair(used_, e, !used_[e]);
-        set_pair(matched_, e, !matched_[e]);
-    }
-    for (size_t i = 1; i < roots.size(); ++i) uf_[roots[i]] = roots[0];
-    return true;
+    return false;
 }
 
-// Fewer loops before any split: flip alternating vertex rings that join loops.
+// An alternating cycle: crossed and matched edges in turn, each face on it once. Swapping crossed
+// and matched edges along it keeps one matched edge per face. Each loop it crosses opens at its
+// crossed edge and the new edges link the openings in turn, so loops met once are all joined into
+// one. A loop met twice, at crossed edges p then q (tail t, head h), stays joined only if its arc
+// from h_p away from t_p reaches h_q before t_q (else it splits off again): checked by walking
+// it. Depth-first from f1 through at most kMaxLoops crossed edges, at most one loop met twice.
+bool MatchingBuilder::flip_alternating(uint32_t f1) {
+    constexpr uint32_t kMaxLoops = 5;
+    if (vlink_[f1]) return false;
+    uint32_t m1 = kNone;  // f1's matched edge closes the cycle
+    for (uint32_t h = 3 * f1; h < 3 * f1 + 3; ++h)
+        if (matched_[h]) m1 = h;
+    if (m1 == kNone) return false;
+    const uint32_t close_face = mesh_.neighbor(m1);
+    uint32_t path[2 * kMaxLoops];  // crossed edge, then matched edge, in turn
+    uint32_t roots[kMaxLoops];
+    uint32_t rep_p = kNone, rep_q = kNone;  // depths of the two crossed edges of a loop met twice
+    auto faces_distinct = [&](uint32_t depth) {
+        uint32_t faces[2 * kMaxLoops];
+        for (uint32_t i = 0; i <= depth; ++i) faces[2 * i] = Mesh::face(path[2 * i]), faces[2 * i + 1] = mesh_.neighbor(path[2 * i]);
+        for (uint32_t i = 0; i < 2 * depth + 2; ++i)
+            for (uint32_t j = 0; j < i; ++j)
+                if (faces[i] == faces[j]) return false;
+        return true;
+    };
+    auto closes_one_loop = [&](uint32_t depth) {
+        if (rep_p == kNone) return true;
+        if (!faces_distinct(depth)) return false;
+        const uint32_t up = path[2 * rep_p], uq = path[2 * rep_q];
+        return meets_first(mesh_.neighbor(up), Mesh::face(up), mesh_.neighbor(uq), Mesh::face(uq));
+    };
+    // Returns true once a cycle is flipped. `f` is the face at which a crossed edge is taken.
+    auto search = [&](auto&& self, uint32_t f, uint32_t depth) -> bool {
+        const uint32_t r = find(sid_[f]);
+        if (!cycle_[r] || pinned_[r] || vlink_[f]) return false;
+        bool repeat = false;
+        for (uint32_t i = 0; i < depth; ++i)
+            if (roots[i] == r) {
+                if (rep_p != kNone) return false;
+                rep_p = i, rep_q = depth, repeat = true;
+            }
+        roots[depth] = r;
+        bool found = false;
+        for (uint32_t h = 3 * f; h < 3 * f + 3 && !found; ++h) {
+            if (!used_[h]) continue;
+            const uint32_t g = mesh_.neighbor(h);
+            uint32_t m = kNone;
+            for (uint32_t e = 3 * g; e < 3 * g + 3; ++e)
+                if (matched_[e]) m = e;
+            if (m == kNone || vlink_[g]) continue;
+            path[2 * depth] = h;
+            path[2 * depth + 1] = m;
+            if (g == close_face && mesh_.twin(m) == m1 && depth > 0 && closes_one_loop(depth)) {
+                for (uint32_t i = 0; i <= 2 * depth + 1; ++i) {
+                    set_pair(used_, path[i], !used_[path[i]]);
+                    set_pair(matched_, path[i], !matched_[path[i]]);
+                }
+                for (uint32_t i = 1; i <= depth; ++i) uf_[find(roots[i])] = find(roots[0]);
+                found = true;
+            } else if (depth + 1 < kMaxLoops && g != close_face) {
+                found = self(self, mesh_.neighbor(m), depth + 1);
+            }
+        }
+        if (repeat) rep_p = rep_q = kNone;
+        return found;
+    };
+    return search(search, f1, 0);
+}
+
+// Fewer loops before any split: flip alternating cycles that join loops.
 void MatchingBuilder::reduce_loops() {
-    std::vector<uint32_t> ring;
     for (uint32_t pass = 0, flips = 1; pass < 4 && flips > 0; ++pass) {  // a flip can enable another
         flips = 0;
-        for (uint32_t v = 0; v < mesh_.num_vertices(); ++v) flips += flip_ring(v, ring);
+        for (uint32_t f = 0; f < mesh_.num_faces(); ++f) flips += flip_alternating(f);
         stats_.ring_flips += flips;
     }
 }
@@ -565,14 +722,22 @@ StripResult MatchingBuilder::finish(std::vector<uint32_t> order) {
 // Not one strip (paths whose ends never touch): the growth builder, which always ends in one
 // strip, finishes on the mesh as split so far.
 StripResult MatchingBuilder::fallback() {
-    StripOptions o = opt_;
-    o.engine = StripEngine::Growth;
-    if (o.seed_face && o.source && !face_has_vertex(mesh_, *o.seed_face, *o.source)) o.seed_face.reset();
-    const uint32_t splits = stats_.splits;
-    StripResult r = build_strip_growth(std::move(mesh_), o);
+    auto grow = [&](Mesh mesh, uint32_t splits) {
+        StripOptions o = opt_;
+        o.engine = StripEngine::Growth;
+        if (o.seed_face && o.source && !face_has_vertex(mesh, *o.seed_face, *o.source)) o.seed_face.reset();
+        StripResult r = build_strip_growth(std::move(mesh), o);
+        r.stats.splits += splits;
+        return r;
+    };
+    StripResult r = grow(std::move(mesh_), stats_.splits);
+    if (pre_merge_) {  // the joins' splits may not suit the growth builder: try without them too
+        StripResult alt = grow(std::move(*pre_merge_), pre_merge_splits_);
+        if (alt.stats.output_triangles < r.stats.output_triangles) r = std::move(alt);
+    }
     r.stats.input_triangles = stats_.input_triangles;
-    r.stats.splits += splits;
     r.stats.loops = stats_.loops;
+    r.stats.ring_flips = stats_.ring_flips;
     r.stats.unmatched = stats_.unmatched;
     r.stats.growth_fallback = true;
     r.stats.engine = StripEngine::Matching;
@@ -595,9 +760,14 @@ StripResult MatchingBuilder::run() {
     quota_.assign(nf, 0);
     choose_pins();
     split_ears();
+    split_bridges();
     set_quotas();
     match_patterned();
     settle_leftovers();
+    if (stats_.unmatched > 0) {  // paths: the growth builder may have to finish (fallback())
+        pre_merge_ = mesh_;
+        pre_merge_splits_ = stats_.splits;
+    }
     label_structures();
     reduce_loops();
     merge_all();

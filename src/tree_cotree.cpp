@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <string>
+#include <tuple>
 #include <utility>
 
 #include "singlestrip/errors.hpp"
@@ -129,6 +130,41 @@ Decomposition decompose(const Mesh& mesh) {
     return d;
 }
 
+/// The faces f .. lca .. g of the cotree path between f and g, then back to f across the edge
+/// that joins g and f: a closed chain.
+std::vector<uint32_t> cotree_cycle(const std::vector<uint32_t>& fparent, const std::vector<uint32_t>& depth, uint32_t f, uint32_t g) {
+    std::vector<uint32_t> up, down;  // f .. lca, g .. (child of lca)
+    while (depth[f] > depth[g]) {
+        up.push_back(f);
+        f = fparent[f];
+    }
+    while (depth[g] > depth[f]) {
+        down.push_back(g);
+        g = fparent[g];
+    }
+    while (f != g) {
+        up.push_back(f);
+        down.push_back(g);
+        f = fparent[f];
+        g = fparent[g];
+    }
+    up.push_back(f);
+    up.insert(up.end(), down.rbegin(), down.rend());
+    return up;
+}
+
+/// Number of faces of cotree_cycle(f, g).
+size_t cotree_cycle_length(const std::vector<uint32_t>& fparent, const std::vector<uint32_t>& depth, uint32_t f, uint32_t g) {
+    size_t n = 1;
+    for (; depth[f] > depth[g]; ++n) f = fparent[f];
+    for (; depth[g] > depth[f]; ++n) g = fparent[g];
+    for (; f != g; n += 2) {
+        f = fparent[f];
+        g = fparent[g];
+    }
+    return n;
+}
+
 }  // namespace
 
 std::vector<std::vector<uint32_t>> tree_cotree_generators(const Mesh& mesh, const std::vector<uint32_t>& order) {
@@ -158,22 +194,8 @@ std::vector<std::vector<uint32_t>> tree_cotree_generators(const Mesh& mesh, cons
     std::vector<std::vector<uint32_t>> gens;
     for (uint32_t e = 0; e < ne; ++e) {
         if (in_tree[e] || in_cotree[e]) continue;
-        uint32_t f = Mesh::face(edge_he[e]);
-        uint32_t g = Mesh::face(mesh.twin(edge_he[e]));
-        std::vector<uint32_t> up, down;  // f .. lca, g .. (child of lca)
-        while (depth[f] > depth[g]) { up.push_back(f); f = fparent[f]; }
-        while (depth[g] > depth[f]) { down.push_back(g); g = fparent[g]; }
-        while (f != g) {
-            up.push_back(f);
-            down.push_back(g);
-            f = fparent[f];
-            g = fparent[g];
-        }
-        up.push_back(f);
-        std::vector<uint32_t> cycle;
-        cycle.reserve(up.size() + down.size());
-        for (uint32_t x : up) cycle.push_back(pos[x]);
-        for (auto it = down.rbegin(); it != down.rend(); ++it) cycle.push_back(pos[*it]);
+        std::vector<uint32_t> cycle = cotree_cycle(fparent, depth, Mesh::face(edge_he[e]), Mesh::face(mesh.twin(edge_he[e])));
+        for (uint32_t& x : cycle) x = pos[x];
         gens.push_back(std::move(cycle));
     }
     return gens;
@@ -192,40 +214,111 @@ Cycles tree_cotree_cycles(const StripResult& result) {
 
 namespace singlestrip {
 
-HomologyClassifier::HomologyClassifier(const Mesh& mesh) : mesh_(&mesh) {
-    Decomposition d = decompose(mesh);
-    q_ = std::move(d.q);
-    edge_of_he_ = std::move(d.edge_of_he);
-    edge_he_ = std::move(d.edge_he);
-    tree_order_ = std::move(d.tree_order);
-    tree_parent_edge_ = std::move(d.tree_parent_edge);
-    for (uint32_t e = 0; e < edge_he_.size(); ++e)
-        if (!d.in_tree[e] && !d.in_cotree[e]) leftover_.push_back(e);
+namespace {
+
+/// Preorder number and subtree size of every tree vertex: the subtree below a vertex is the
+/// preorder interval [pre, pre + size). Parents come before children in d.tree_order (BFS), so
+/// each child takes the next free slot of its parent. Vertices outside the tree keep kNone.
+void preorder_intervals(const Mesh& mesh, const Decomposition& d, std::vector<uint32_t>& pre, std::vector<uint32_t>& size) {
+    const size_t nq = d.tree_parent_edge.size();
+    pre.assign(nq, kNone);
+    size.assign(nq, 1);
+    if (d.tree_order.empty()) return;
+    auto parent_of = [&](uint32_t v) {
+        const uint32_t e = d.tree_parent_edge[v];
+        const uint32_t a = d.q[mesh.from(d.edge_he[e])], b = d.q[mesh.to(d.edge_he[e])];
+        return a == v ? b : a;
+    };
+    for (auto it = d.tree_order.rbegin(); it != d.tree_order.rend(); ++it)
+        if (d.tree_parent_edge[*it] != kNone) size[parent_of(*it)] += size[*it];
+    std::vector<uint32_t> next_free(nq, 0);
+    for (const uint32_t v : d.tree_order) {
+        pre[v] = d.tree_parent_edge[v] == kNone ? 0 : next_free[parent_of(v)];
+        if (d.tree_parent_edge[v] != kNone) next_free[parent_of(v)] += size[v];
+        next_free[v] = pre[v] + 1;
+    }
 }
 
+}  // namespace
+
+HomologyClassifier::HomologyClassifier(const Mesh& mesh) : mesh_(&mesh) {
+    Decomposition d = decompose(mesh);
+    const uint32_t ne = static_cast<uint32_t>(d.edge_he.size());
+    bit_of_edge_.assign(ne, kNone);
+    for (uint32_t e = 0; e < ne; ++e)
+        if (!d.in_tree[e] && !d.in_cotree[e]) {
+            bit_of_edge_[e] = static_cast<uint32_t>(leftover_.size());
+            leftover_.push_back(e);
+        }
+    std::vector<uint32_t> pre, size;
+    preorder_intervals(mesh, d, pre, size);
+    // Both endpoints of every leftover edge, sorted by the preorder number of their vertex.
+    std::vector<std::pair<uint32_t, uint32_t>> ends;  // (preorder, class bit)
+    ends.reserve(2 * leftover_.size());
+    for (uint32_t j = 0; j < leftover_.size(); ++j) {
+        const uint32_t h = d.edge_he[leftover_[j]];
+        ends.push_back({pre[d.q[mesh.from(h)]], j});
+        ends.push_back({pre[d.q[mesh.to(h)]], j});
+    }
+    std::sort(ends.begin(), ends.end());
+    std::vector<uint32_t> end_pre(ends.size());
+    end_bit_.resize(ends.size());
+    for (size_t i = 0; i < ends.size(); ++i) std::tie(end_pre[i], end_bit_[i]) = ends[i];
+    // Per tree edge: the endpoints in the subtree below it (its child's preorder interval).
+    under_first_.assign(ne, 0);
+    under_last_.assign(ne, 0);
+    for (const uint32_t c : d.tree_order) {
+        const uint32_t e = d.tree_parent_edge[c];
+        if (e == kNone) continue;
+        under_first_[e] = static_cast<uint32_t>(std::lower_bound(end_pre.begin(), end_pre.end(), pre[c]) - end_pre.begin());
+        under_last_[e] = static_cast<uint32_t>(std::lower_bound(end_pre.begin(), end_pre.end(), pre[c] + size[c]) - end_pre.begin());
+    }
+    edge_of_he_ = std::move(d.edge_of_he);
+    for (const uint32_t e : leftover_) leftover_he_.push_back(d.edge_he[e]);
+    fparent_ = std::move(d.fparent);
+    depth_ = std::move(d.depth);
+}
+
+std::vector<uint32_t> HomologyClassifier::generator(size_t j) const {
+    const uint32_t h = leftover_he_.at(j);
+    return cotree_cycle(fparent_, depth_, Mesh::face(h), Mesh::face(mesh_->twin(h)));
+}
+
+size_t HomologyClassifier::generator_length(size_t j) const {
+    const uint32_t h = leftover_he_.at(j);
+    return cotree_cycle_length(fparent_, depth_, Mesh::face(h), Mesh::face(mesh_->twin(h)));
+}
+
+// Bit j = crossings of leftover edge j + crossings of the tree paths from its two endpoints to
+// the root. A crossed tree edge lies on the root path of exactly the vertices below it, so it
+// flips the endpoints in one preorder interval; parity is odd between the 1st and 2nd, 3rd and
+// 4th, ... interval ends in sorted order.
 std::vector<uint64_t> HomologyClassifier::classify(const std::vector<uint32_t>& faces) const {
     const Mesh& mesh = *mesh_;
-    // Crossing parity per interior edge (sparse: only the edges the chain crosses).
-    std::vector<uint8_t> crossed(edge_he_.size(), 0);
-    for (size_t i = 0; i < faces.size() && faces.size() >= 2; ++i) {
+    std::vector<uint64_t> bits((leftover_.size() + 63) / 64, 0);
+    if (faces.size() < 2) return bits;
+    std::vector<uint32_t> crossed(faces.size());
+    for (size_t i = 0; i < faces.size(); ++i) {
         const uint32_t h = mesh.shared_halfedge(faces[i], faces[(i + 1) % faces.size()]);
         if (h == kNone) throw InternalError("homology class: consecutive faces of a chain are not adjacent");
-        crossed[edge_of_he_[h]] ^= 1;
+        crossed[i] = edge_of_he_[h];
     }
-    // Parity along the tree path from every quotient vertex to the root (BFS order: parents first).
-    std::vector<uint8_t> par(q_.size() + 1, 0);
-    for (uint32_t v : tree_order_) {
-        const uint32_t e = tree_parent_edge_[v];
-        if (e == kNone) continue;
-        const uint32_t a = q_[mesh.from(edge_he_[e])], b = q_[mesh.to(edge_he_[e])];
-        par[v] = par[a == v ? b : a] ^ crossed[e];
+    std::sort(crossed.begin(), crossed.end());
+    auto flip = [&](uint32_t bit) { bits[bit / 64] ^= uint64_t{1} << (bit % 64); };
+    std::vector<uint32_t> marks;
+    for (size_t i = 0, j = 0; i < crossed.size(); i = j) {
+        while (j < crossed.size() && crossed[j] == crossed[i]) ++j;
+        if ((j - i) % 2 == 0) continue;  // crossed back and forth: no intersection
+        const uint32_t e = crossed[i];
+        if (bit_of_edge_[e] != kNone) flip(bit_of_edge_[e]);
+        if (under_first_[e] != under_last_[e]) {
+            marks.push_back(under_first_[e]);
+            marks.push_back(under_last_[e]);
+        }
     }
-    std::vector<uint64_t> bits((leftover_.size() + 63) / 64, 0);
-    for (size_t j = 0; j < leftover_.size(); ++j) {
-        const uint32_t e = leftover_[j];
-        const uint8_t p = crossed[e] ^ par[q_[mesh.from(edge_he_[e])]] ^ par[q_[mesh.to(edge_he_[e])]];
-        if (p) bits[j / 64] |= uint64_t{1} << (j % 64);
-    }
+    std::sort(marks.begin(), marks.end());
+    for (size_t k = 0; k + 1 < marks.size(); k += 2)
+        for (uint32_t i = marks[k]; i < marks[k + 1]; ++i) flip(end_bit_[i]);
     return bits;
 }
 

@@ -1,11 +1,12 @@
 // Controllable strips (issue 4): constraint edges (§5.1) and source/target vertices (§5.2),
-// alone and together, every strip checked by the independent verifier.
+// alone and together, every strip checked by the independent verifier. Every test runs on both
+// engines (test names end in /matching or /growth).
 #include <gtest/gtest.h>
 
-#include <random>
 #include <functional>
 #include <map>
 #include <numeric>
+#include <random>
 #include <set>
 
 #include "cgal_data.hpp"
@@ -110,15 +111,37 @@ TriangleSoup random_mesh(std::mt19937_64& rng, std::string& name) {
     return soup;
 }
 
+/// Suites over both engines; opts() gives default options on the engine under test.
+class EngineTest : public ::testing::TestWithParam<StripEngine> {
+protected:
+    StripOptions opts() const {
+        StripOptions o;
+        o.engine = GetParam();
+        return o;
+    }
+};
+class Constraints : public EngineTest {};
+class Endpoints : public EngineTest {};
+class ConstraintsReal : public EngineTest {};
+
+std::string engine_test_name(const ::testing::TestParamInfo<StripEngine>& info) {
+    return engine_name(info.param);
+}
+
 }  // namespace
 
-TEST(Constraints, ThousandRandomCasesWithEndpoints) {
+const auto kBothEngines = ::testing::Values(StripEngine::Matching, StripEngine::Growth);
+INSTANTIATE_TEST_SUITE_P(Engines, Constraints, kBothEngines, engine_test_name);
+INSTANTIATE_TEST_SUITE_P(Engines, Endpoints, kBothEngines, engine_test_name);
+INSTANTIATE_TEST_SUITE_P(Engines, ConstraintsReal, kBothEngines, engine_test_name);
+
+TEST_P(Constraints, ThousandRandomCasesWithEndpoints) {
     std::mt19937_64 rng(4242);
     int verified = 0, separating = 0;
     for (int i = 0; i < 1000; ++i) {
         std::string name;
         const TriangleSoup soup = random_mesh(rng, name);
-        StripOptions o;
+        StripOptions o = opts();
         const int mode = i % 4;  // constraints, endpoints, both, both with source == target
         if (mode != 1) o.constraint_edges = random_polylines(soup, rng, 1 + rng() % 4, 12);
         if (mode != 0) {
@@ -147,7 +170,7 @@ TEST(Constraints, ThousandRandomCasesWithEndpoints) {
     EXPECT_GT(verified, 700);
 }
 
-TEST(Constraints, LoopsAroundTorusHandles) {
+TEST_P(Constraints, LoopsAroundTorusHandles) {
     const uint32_t nm = 12, nn = 8;
     const TriangleSoup torus = make_torus(nm, nn);
     auto id = [&](uint32_t i, uint32_t j) { return (i % nm) * nn + j % nn; };
@@ -156,18 +179,18 @@ TEST(Constraints, LoopsAroundTorusHandles) {
     for (uint32_t j = 0; j < nn; ++j) second_meridian.push_back({id(5, j), id(5, j + 1)});
     for (uint32_t i = 0; i < nm; ++i) longitude.push_back({id(i, 0), id(i + 1, 0)});
     for (const EdgeList& loops : {meridian, longitude, [&] {
-             EdgeList both = meridian;
-             both.insert(both.end(), longitude.begin(), longitude.end());
-             return both;
-         }()}) {
-        StripOptions o;
+                                      EdgeList both = meridian;
+                                      both.insert(both.end(), longitude.begin(), longitude.end());
+                                      return both;
+                                  }()}) {
+        StripOptions o = opts();
         o.constraint_edges = loops;
         o.source = id(3, 3);
         o.target = id(8, 5);
         const auto c = strip_and_verify(torus, o);
         EXPECT_TRUE(c.report.ok()) << describe(c);
     }
-    StripOptions cut;
+    StripOptions cut = opts();
     cut.constraint_edges = meridian;
     cut.constraint_edges.insert(cut.constraint_edges.end(), second_meridian.begin(), second_meridian.end());
     try {
@@ -179,18 +202,18 @@ TEST(Constraints, LoopsAroundTorusHandles) {
     }
 }
 
-TEST(Constraints, BoundaryConstraintEdgesChangeNothing) {
+TEST_P(Constraints, BoundaryConstraintEdgesChangeNothing) {
     const TriangleSoup disk = make_grid_disk(4, 4);
-    StripOptions o;
+    StripOptions o = opts();
     o.constraint_edges = {{0, 1}, {1, 2}, {2, 3}};  // along the grid's first row: the boundary
     const auto with = strip_and_verify(disk, o);
-    const auto without = strip_and_verify(disk, {});
+    const auto without = strip_and_verify(disk, opts());
     EXPECT_TRUE(with.report.ok()) << describe(with);
     EXPECT_EQ(with.arrays.faces, without.arrays.faces);
 }
 
-TEST(Constraints, PairThatIsNotAnEdgeIsARequestError) {
-    StripOptions o;
+TEST_P(Constraints, PairThatIsNotAnEdgeIsARequestError) {
+    StripOptions o = opts();
     o.constraint_edges = {{0, 1}, {0, 24}};
     try {
         build_strip(Mesh::from_soup(make_grid_disk(4, 4)), o);
@@ -200,24 +223,24 @@ TEST(Constraints, PairThatIsNotAnEdgeIsARequestError) {
     }
 }
 
-TEST(Endpoints, BadVerticesAreRequestErrors) {
+TEST_P(Endpoints, BadVerticesAreRequestErrors) {
     TriangleSoup s = make_grid_disk(2, 2);
     s.points.push_back({5, 5, 5});  // unreferenced vertex
-    StripOptions o;
+    StripOptions o = opts();
     o.source = 1000;
     EXPECT_THROW(build_strip(Mesh::from_soup(s), o), RequestError);
     o.source = static_cast<uint32_t>(s.points.size() - 1);
     EXPECT_THROW(build_strip(Mesh::from_soup(s), o), RequestError);
-    StripOptions t;
+    StripOptions t = opts();
     t.target = static_cast<uint32_t>(s.points.size() - 1);
     EXPECT_THROW(build_strip(Mesh::from_soup(s), t), RequestError);
 }
 
-TEST(Endpoints, EveryVertexPairOfASmallMesh) {
+TEST_P(Endpoints, EveryVertexPairOfASmallMesh) {
     const TriangleSoup soup = make_disk_with_holes(1, 2);
     for (uint32_t s = 0; s < soup.points.size(); s += 3)
         for (uint32_t t = 0; t < soup.points.size(); t += 2) {
-            StripOptions o;
+            StripOptions o = opts();
             o.source = s;
             o.target = t;
             o.validate_each_split = true;
@@ -226,14 +249,14 @@ TEST(Endpoints, EveryVertexPairOfASmallMesh) {
         }
 }
 
-TEST(ConstraintsReal, RandomConstraintsAndEndpointsOnRealMeshes) {
+TEST_P(ConstraintsReal, RandomConstraintsAndEndpointsOnRealMeshes) {
     std::mt19937_64 rng(99);
     for (const char* name : {"fandisk.off", "head.off", "eight.off", "mushroom.off"}) {
         const std::string path = singlestrip::test::cgal_mesh_path(name);
         if (path.empty()) GTEST_SKIP() << "libcgal-demo data not available";
         const TriangleSoup soup = prepare_soup(read_mesh_file(path), {}, path);
         for (int i = 0; i < 8; ++i) {
-            StripOptions o;
+            StripOptions o = opts();
             o.constraint_edges = random_polylines(soup, rng, 1 + rng() % 6, 40);
             o.source = soup.triangles[rng() % soup.triangles.size()][0];
             o.target = soup.triangles[rng() % soup.triangles.size()][1];
@@ -248,11 +271,11 @@ TEST(ConstraintsReal, RandomConstraintsAndEndpointsOnRealMeshes) {
     }
 }
 
-TEST(Endpoints, TargetWhoseOnlyFaceIsTheFirstFace) {
+TEST_P(Endpoints, TargetWhoseOnlyFaceIsTheFirstFace) {
     // A corner of a single-row corridor has one face: start and end there (source == target).
     const TriangleSoup soup = make_grid_disk(3, 3);
     for (uint32_t v = 0; v < soup.points.size(); ++v) {
-        StripOptions o;
+        StripOptions o = opts();
         o.source = v;
         o.target = v;
         const auto c = strip_and_verify(soup, o);
@@ -262,13 +285,13 @@ TEST(Endpoints, TargetWhoseOnlyFaceIsTheFirstFace) {
 
 // Issue 5 point 3: with constraints and endpoints the cycles are still the surface's
 // (2g+h-1 of them, independent), whatever the constraints did to the fundamental triangles.
-TEST(Constraints, CyclesAreTheSurfacesWithConstraintsAndEndpoints) {
+TEST_P(Constraints, CyclesAreTheSurfacesWithConstraintsAndEndpoints) {
     const uint32_t nm = 12, nn = 8;
     const TriangleSoup torus = make_torus(nm, nn);
     auto id = [&](uint32_t i, uint32_t j) { return (i % nm) * nn + j % nn; };
     std::mt19937_64 rng(5);
     for (int variant = 0; variant < 4; ++variant) {
-        StripOptions o;
+        StripOptions o = opts();
         if (variant & 1)
             for (uint32_t j = 0; j < nn; ++j) o.constraint_edges.push_back({id(0, j), id(0, j + 1)});
         if (variant & 2) {

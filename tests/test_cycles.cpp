@@ -1,6 +1,7 @@
 // Fundamental cycles (paper §4) and tree–cotree generators: count 2g+h-1 (2g closed), closed
 // chains, Z2 independence — each set checked by the independent verifier (verify.hpp) AND by a
 // second Z2 rank check written here (intersection parity with relative cycles of H1(M, dM)).
+// Every test that builds a strip runs on both engines (test names end in /matching or /growth).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -18,6 +19,7 @@
 
 #include "cgal_data.hpp"
 #include "singlestrip/cycles.hpp"
+#include "singlestrip/encode.hpp"
 #include "singlestrip/errors.hpp"
 #include "singlestrip/generators.hpp"
 #include "singlestrip/io.hpp"
@@ -26,6 +28,7 @@
 #include "singlestrip/tree_cotree.hpp"
 #include "singlestrip/validate.hpp"
 #include "singlestrip/verify.hpp"
+#include "strip_check.hpp"
 
 using namespace singlestrip;
 
@@ -113,8 +116,7 @@ RankCheck z2_rank(const std::vector<Point3>& /*points*/, const std::vector<Trian
             auto it = edge_id.find({std::min(f, g), std::max(f, g)});
             if (f >= faces.size() || g >= faces.size() || it == edge_id.end()) {
                 rc.chains_ok = false;
-                rc.problem = "cycle " + std::to_string(c) + ": faces " + std::to_string(f) + ", " +
-                             std::to_string(g) + " are not adjacent";
+                rc.problem = "cycle " + std::to_string(c) + ": faces " + std::to_string(f) + ", " + std::to_string(g) + " are not adjacent";
                 return rc;
             }
             crossed[it->second] ^= 1;
@@ -144,7 +146,9 @@ RankCheck z2_rank(const std::vector<Point3>& /*points*/, const std::vector<Trian
     return rc;
 }
 
-long long expected_count(long long genus, long long loops) { return loops == 0 ? 2 * genus : 2 * genus + loops - 1; }
+long long expected_count(long long genus, long long loops) {
+    return loops == 0 ? 2 * genus : 2 * genus + loops - 1;
+}
 
 double mean(const std::vector<double>& v) {
     return v.empty() ? 0.0 : std::accumulate(v.begin(), v.end(), 0.0) / static_cast<double>(v.size());
@@ -182,8 +186,8 @@ struct Outcome {
 /// Strip, cycles, tree-cotree; both sets checked by verify() and by z2_rank().
 /// `degenerate_geometry`: random flips of planar regions make zero-area faces, which the verifier's
 /// geometric checks may flag; only its cycle checks are then required to pass.
-Outcome check_surface(const TriangleSoup& soup, long long genus, long long loops, const std::string& what,
-                      const StripOptions& opt = {}, bool degenerate_geometry = false) {
+Outcome check_surface(const TriangleSoup& soup, long long genus, long long loops, const std::string& what, const StripOptions& opt,
+                      bool degenerate_geometry = false) {
     Outcome o;
     Mesh mesh = Mesh::from_soup(soup);
     EXPECT_EQ(mesh.genus(), genus) << what;
@@ -206,6 +210,10 @@ Outcome check_surface(const TriangleSoup& soup, long long genus, long long loops
         in.out_points = a.points;
         in.out_faces = a.faces;
         in.out_parent = a.parent;
+        in.indices = encode_triangle_strip(a.faces);
+        in.constraints = opt.constraint_edges;
+        in.source = opt.source;
+        in.target = opt.target;
         in.cycles = c->cycles;
         const VerifyReport rep = verify(in);
         if (!degenerate_geometry) {
@@ -227,67 +235,87 @@ TriangleSoup load_real(const std::string& name) {
     return prepare_soup(read_mesh_file(path), PrepareOptions{}, path);
 }
 
+/// Suites over both engines; opts() gives default options on the engine under test.
+class EngineTest : public ::testing::TestWithParam<StripEngine> {
+protected:
+    StripOptions opts() const {
+        StripOptions o;
+        o.engine = GetParam();
+        return o;
+    }
+};
+class StripCycles : public EngineTest {};
+class StripCyclesReal : public EngineTest {};
+
+std::string engine_test_name(const ::testing::TestParamInfo<StripEngine>& info) {
+    return engine_name(info.param);
+}
+
 }  // namespace
+
+const auto kBothEngines = ::testing::Values(StripEngine::Matching, StripEngine::Growth);
+INSTANTIATE_TEST_SUITE_P(Engines, StripCycles, kBothEngines, engine_test_name);
+INSTANTIATE_TEST_SUITE_P(Engines, StripCyclesReal, kBothEngines, engine_test_name);
 
 // ---- procedural surfaces ----
 
-TEST(Cycles, TorusHasTwo) {
-    for (uint32_t n : {3u, 4u, 8u, 16u}) check_surface(make_torus(2 * n, n), 1, 0, "torus " + std::to_string(n));
+TEST_P(StripCycles, TorusHasTwo) {
+    for (uint32_t n : {3u, 4u, 8u, 16u}) check_surface(make_torus(2 * n, n), 1, 0, "torus " + std::to_string(n), opts());
 }
 
-TEST(Cycles, DoubleTorusHasFour) {
-    for (uint32_t r : {1u, 2u, 4u}) check_surface(make_genus_surface(2, r), 2, 0, "genus 2 r=" + std::to_string(r));
+TEST_P(StripCycles, DoubleTorusHasFour) {
+    for (uint32_t r : {1u, 2u, 4u}) check_surface(make_genus_surface(2, r), 2, 0, "genus 2 r=" + std::to_string(r), opts());
 }
 
-TEST(Cycles, GenusFiveHasTen) {
-    for (uint32_t r : {1u, 3u}) check_surface(make_genus_surface(5, r), 5, 0, "genus 5 r=" + std::to_string(r));
+TEST_P(StripCycles, GenusFiveHasTen) {
+    for (uint32_t r : {1u, 3u}) check_surface(make_genus_surface(5, r), 5, 0, "genus 5 r=" + std::to_string(r), opts());
 }
 
-TEST(Cycles, SphereAndDiskHaveNone) {
-    check_surface(make_icosphere(2), 0, 0, "icosphere");
-    check_surface(make_grid_disk(6, 5), 0, 1, "grid disk");
+TEST_P(StripCycles, SphereAndDiskHaveNone) {
+    check_surface(make_icosphere(2), 0, 0, "icosphere", opts());
+    check_surface(make_grid_disk(6, 5), 0, 1, "grid disk", opts());
 }
 
-TEST(Cycles, DiskWithHolesHasKMinusOne) {
+TEST_P(StripCycles, DiskWithHolesHasKMinusOne) {
     // k holes in a disk: b = k + 1 boundary loops, so 2g + b - 1 = k cycles.
     for (uint32_t k : {1u, 2u, 3u, 5u})
         for (uint32_t r : {1u, 2u, 3u})
-            check_surface(make_disk_with_holes(k, r), 0, k + 1, "disk with " + std::to_string(k) + " holes r=" + std::to_string(r));
+            check_surface(make_disk_with_holes(k, r), 0, k + 1, "disk with " + std::to_string(k) + " holes r=" + std::to_string(r), opts());
 }
 
-TEST(Cycles, GenusWithHolesRandomFlips) {
+TEST_P(StripCycles, GenusWithHolesRandomFlips) {
     uint64_t seed = 1;
     for (uint32_t g : {1u, 2u, 3u})
         for (uint32_t h : {1u, 2u, 4u}) {
             TriangleSoup s = make_genus_with_holes(g, h, 3);
             random_edge_flips(s, s.triangles.size() / 4, seed++);
-            check_surface(s, g, h, "genus " + std::to_string(g) + " with " + std::to_string(h) + " holes (flipped)", {}, true);
+            check_surface(s, g, h, "genus " + std::to_string(g) + " with " + std::to_string(h) + " holes (flipped)", opts(), true);
         }
 }
 
-TEST(Cycles, RandomTorusAndAnnulusMeshes) {
+TEST_P(StripCycles, RandomTorusAndAnnulusMeshes) {
     for (uint64_t seed = 1; seed <= 6; ++seed) {
         TriangleSoup t = make_torus(12, 7);
         random_edge_flips(t, 60, seed);
-        check_surface(t, 1, 0, "flipped torus seed " + std::to_string(seed), {}, true);
+        check_surface(t, 1, 0, "flipped torus seed " + std::to_string(seed), opts(), true);
         TriangleSoup a = make_annulus(10, 3);
         random_edge_flips(a, 20, seed);
-        check_surface(a, 0, 2, "flipped annulus seed " + std::to_string(seed), {}, true);
+        check_surface(a, 0, 2, "flipped annulus seed " + std::to_string(seed), opts(), true);
     }
 }
 
-TEST(Cycles, ClosedSurfaceAnySeedFace) {
+TEST_P(StripCycles, ClosedSurfaceAnySeedFace) {
     // On a closed surface every seed is "on the boundary" of nothing: count and independence hold.
     const TriangleSoup s = make_genus_surface(2, 2);
     for (uint32_t seed : {0u, 17u, 101u}) {
-        StripOptions opt;
+        StripOptions opt = opts();
         opt.seed_face = seed;
         check_surface(s, 2, 0, "genus 2, seed face " + std::to_string(seed), opt);
     }
 }
 
-TEST(Cycles, InteriorSeedStillClosedChains) {
-    // Seed not on the boundary: only closure/adjacency is promised (header); check that.
+TEST_P(StripCycles, InteriorSeedStillClosedChains) {
+    // Seed not on the boundary: closed chains, and still a basis (cycles.hpp, any seed).
     const TriangleSoup s = make_disk_with_holes(2, 3);
     Mesh mesh = Mesh::from_soup(s);
     // A face with no boundary edge.
@@ -298,15 +326,19 @@ TEST(Cycles, InteriorSeedStillClosedChains) {
         if (!b && f > 20) interior = f;
     }
     ASSERT_NE(interior, kNone);
-    StripOptions opt;
+    StripOptions opt = opts();
     opt.seed_face = interior;
-    const StripResult r = build_strip(std::move(mesh), opt);
+    const auto check = singlestrip::testing::strip_and_verify(s, opt);
+    EXPECT_TRUE(check.report.ok()) << singlestrip::testing::describe(check);
+    const StripResult& r = check.result;
     const Cycles c = compute_fundamental_cycles(r);
-    EXPECT_EQ(c.cycles.size(), r.fundamental_positions.size());
+    // cycles.hpp: 2g + h - 1 cycles for any seed (here 0 + 3 - 1), tree-cotree filling in for
+    // classes the growth builder's interior seed did not meet.
+    EXPECT_EQ(c.cycles.size(), 2u);
     expect_closed_chains(r, c, "interior seed");
 }
 
-TEST(Cycles, TreeCotreeOnInputMeshWithIdentityOrder) {
+TEST(CycleTools, TreeCotreeOnInputMeshWithIdentityOrder) {
     const TriangleSoup s = make_genus_with_holes(2, 3, 2);
     const Mesh m = Mesh::from_soup(s);
     const auto gens = tree_cotree_generators(m);
@@ -317,7 +349,7 @@ TEST(Cycles, TreeCotreeOnInputMeshWithIdentityOrder) {
     EXPECT_THROW(tree_cotree_generators(m, {0, 1, 2}), RequestError);
 }
 
-TEST(Cycles, SecondOpinionDetectsDependence) {
+TEST(CycleTools, SecondOpinionDetectsDependence) {
     // The rank check must not be vacuous: duplicate a cycle and the rank stays put; a cycle
     // around one interior vertex (its face star) is null-homologous.
     const TriangleSoup s = make_torus(9, 5);
@@ -341,12 +373,13 @@ TEST(Cycles, SecondOpinionDetectsDependence) {
 
 // ---- output files ----
 
-TEST(Cycles, WritesJsonAndObj) {
-    const StripResult r = build_strip(Mesh::from_soup(make_torus(10, 6)));
+TEST_P(StripCycles, WritesJsonAndObj) {
+    const StripResult r = build_strip(Mesh::from_soup(make_torus(10, 6)), opts());
     const Cycles c = compute_fundamental_cycles(r);
     const StripArrays a = strip_arrays(r);
-    const std::string json_path = ::testing::TempDir() + "ss_cycles_test.json";
-    const std::string obj_path = ::testing::TempDir() + "ss_cycles_test.obj";
+    // One file per engine: ctest may run both instances at once.
+    const std::string json_path = ::testing::TempDir() + "ss_cycles_test_" + engine_name(GetParam()) + ".json";
+    const std::string obj_path = ::testing::TempDir() + "ss_cycles_test_" + engine_name(GetParam()) + ".obj";
     write_cycles_json(json_path, c);
     write_cycles_obj(obj_path, a, c);
 
@@ -391,13 +424,13 @@ TEST(Cycles, WritesJsonAndObj) {
     std::remove(obj_path.c_str());
 }
 
-TEST(Cycles, WriteToMissingDirectoryThrowsOutputError) {
+TEST(CycleTools, WriteToMissingDirectoryThrowsOutputError) {
     const Cycles c;
     EXPECT_THROW(write_cycles_json("/nonexistent-dir-singlestrip/c.json", c), OutputError);
     EXPECT_THROW(write_cycles_obj("/nonexistent-dir-singlestrip/c.obj", StripArrays{}, c), OutputError);
 }
 
-TEST(Cycles, CycleLengthOfTwoUnitTriangles) {
+TEST(CycleTools, CycleLengthOfTwoUnitTriangles) {
     // Square [0,1]^2 split on the diagonal: the 2-chain goes centroid -> diagonal midpoint ->
     // centroid -> same midpoint -> back.
     StripArrays a;
@@ -411,7 +444,8 @@ TEST(Cycles, CycleLengthOfTwoUnitTriangles) {
 // ---- real meshes (libcgal-demo) ----
 
 namespace {
-void check_real(const std::string& name, long long expected_genus, long long expected_loops, long long expected_cycles) {
+void check_real(const std::string& name, long long expected_genus, long long expected_loops, long long expected_cycles,
+                const StripOptions& opt) {
     const TriangleSoup s = load_real(name);
     if (s.triangles.empty()) GTEST_SKIP() << name << " not available";
     const Mesh m = Mesh::from_soup(s);
@@ -426,21 +460,33 @@ void check_real(const std::string& name, long long expected_genus, long long exp
     if (expected_cycles >= 0) {
         EXPECT_EQ(expected_count(g, b), expected_cycles) << name;
     }
-    const Outcome o = check_surface(s, g, b, name);
-    std::printf("[cycles] %s: g=%lld h=%lld cycles=%zu | steepest ascent: mean %.4f (%.1f faces) | tree-cotree: mean %.4f (%.1f faces)\n",
-                name.c_str(), g, b, o.strip_cycles.cycles.size(), mean(o.strip_cycles.lengths), mean_faces(o.strip_cycles),
-                mean(o.tc_cycles.lengths), mean_faces(o.tc_cycles));
+    const Outcome o = check_surface(s, g, b, name, opt);
+    std::printf(
+        "[cycles] %s %s: g=%lld h=%lld cycles=%zu | steepest ascent: mean %.4f (%.1f faces) | tree-cotree: mean %.4f (%.1f faces)\n",
+        engine_name(opt.engine), name.c_str(), g, b, o.strip_cycles.cycles.size(), mean(o.strip_cycles.lengths), mean_faces(o.strip_cycles),
+        mean(o.tc_cycles.lengths), mean_faces(o.tc_cycles));
     size_t by_source[6] = {0, 0, 0, 0, 0, 0};
     for (CycleSource src : o.strip_cycles.sources) ++by_source[static_cast<size_t>(src)];
-    std::printf("[cycles] %s sources: ascent %zu, descent %zu, strip segment %zu, shortest path %zu, tree-cotree fill %zu, parallel path %zu\n",
-                name.c_str(), by_source[0], by_source[1], by_source[2], by_source[3], by_source[4], by_source[5]);
+    std::printf(
+        "[cycles] %s %s sources: ascent %zu, descent %zu, strip segment %zu, shortest path %zu, tree-cotree fill %zu, parallel path %zu\n",
+        engine_name(opt.engine), name.c_str(), by_source[0], by_source[1], by_source[2], by_source[3], by_source[4], by_source[5]);
     ::testing::Test::RecordProperty("steepest_ascent_mean_length", std::to_string(mean(o.strip_cycles.lengths)));
     ::testing::Test::RecordProperty("tree_cotree_mean_length", std::to_string(mean(o.tc_cycles.lengths)));
 }
 }  // namespace
 
-TEST(CyclesReal, Eight) { check_real("eight.off", 2, 0, 4); }
-TEST(CyclesReal, Head) { check_real("head.off", 0, 3, 2); }
-TEST(CyclesReal, ElephantWithHoles) { check_real("elephant-with-holes.off", -1, -1, -1); }
-TEST(CyclesReal, Turbine) { check_real("turbine.off", -1, -1, -1); }
-TEST(CyclesReal, Cheese) { check_real("cheese.off", -1, -1, 266); }
+TEST_P(StripCyclesReal, Eight) {
+    check_real("eight.off", 2, 0, 4, opts());
+}
+TEST_P(StripCyclesReal, Head) {
+    check_real("head.off", 0, 3, 2, opts());
+}
+TEST_P(StripCyclesReal, ElephantWithHoles) {
+    check_real("elephant-with-holes.off", -1, -1, -1, opts());
+}
+TEST_P(StripCyclesReal, Turbine) {
+    check_real("turbine.off", -1, -1, -1, opts());
+}
+TEST_P(StripCyclesReal, Cheese) {
+    check_real("cheese.off", -1, -1, 266, opts());
+}

@@ -65,8 +65,8 @@ std::vector<std::vector<uint32_t>> face_neighbours(const TriangleSoup& s) {
 
 /// Random walk of edge-adjacent faces. self_avoiding: stops when stuck; otherwise consecutive
 /// faces only have to differ.
-std::vector<Triangle> random_walk(const TriangleSoup& s, const std::vector<std::vector<uint32_t>>& nb,
-                                  size_t length, uint64_t seed, bool self_avoiding) {
+std::vector<Triangle> random_walk(const TriangleSoup& s, const std::vector<std::vector<uint32_t>>& nb, size_t length, uint64_t seed,
+                                  bool self_avoiding) {
     Rng rng{seed};
     std::vector<char> used(s.triangles.size(), 0);
     uint32_t f = static_cast<uint32_t>(rng.below(s.triangles.size()));
@@ -172,9 +172,9 @@ TEST(Encode, PreconditionViolationsThrow) {
 
 TEST(Encode, RoundTripOnRandomWalks) {
     const std::vector<std::pair<std::string, TriangleSoup>> meshes = {
-        {"grid", make_grid_disk(12, 9)},       {"fan", make_fan(30)},
-        {"icosphere", make_icosphere(3)},      {"torus", make_torus(20, 9)},
-        {"genus2", make_builtin_model()},      {"annulus", make_annulus(16, 4)},
+        {"grid", make_grid_disk(12, 9)},  {"fan", make_fan(30)},
+        {"icosphere", make_icosphere(3)}, {"torus", make_torus(20, 9)},
+        {"genus2", make_builtin_model()}, {"annulus", make_annulus(16, 4)},
     };
     for (const auto& [name, mesh] : meshes) {
         const auto nb = face_neighbours(mesh);
@@ -187,8 +187,8 @@ TEST(Encode, RoundTripOnRandomWalks) {
                 idx += encode_triangle_strip(walk).size();
             }
         }
-        std::printf("[ measure ] %-10s random walks: %zu triangles, %.3f indices per triangle\n",
-                    name.c_str(), tris, static_cast<double>(idx) / static_cast<double>(tris));
+        std::printf("[ measure ] %-10s random walks: %zu triangles, %.3f indices per triangle\n", name.c_str(), tris,
+                    static_cast<double>(idx) / static_cast<double>(tris));
     }
 }
 
@@ -208,8 +208,7 @@ TEST(Encode, SameDirectionTurnsCostASwap) {
 }
 
 TEST(Encode, OptimalAgainstBruteForce) {
-    const std::vector<TriangleSoup> meshes = {make_grid_disk(3, 3), make_icosphere(0), make_fan(6),
-                                              make_torus(3, 3), make_annulus(5, 1)};
+    const std::vector<TriangleSoup> meshes = {make_grid_disk(3, 3), make_icosphere(0), make_fan(6), make_torus(3, 3), make_annulus(5, 1)};
     size_t cases = 0;
     for (size_t mi = 0; mi < meshes.size(); ++mi) {
         const auto nb = face_neighbours(meshes[mi]);
@@ -219,8 +218,7 @@ TEST(Encode, OptimalAgainstBruteForce) {
             const auto s = encode_triangle_strip(walk);
             ASSERT_TRUE(same_faces(decode_triangle_strip(s), walk));
             // No sequence shorter than the encoder's exists.
-            EXPECT_EQ(brute_force_shortest(walk, s.size()), s.size())
-                << "mesh " << mi << " seed " << seed << " faces " << walk.size();
+            EXPECT_EQ(brute_force_shortest(walk, s.size()), s.size()) << "mesh " << mi << " seed " << seed << " faces " << walk.size();
             ++cases;
         }
     }
@@ -235,8 +233,10 @@ TEST(Encode, OptimalAgainstBruteForce) {
 TEST(Encode, RoundTripOnBuiltStrips) {
     // Typical input: the single strips build_strip() makes of generated meshes.
     const std::vector<std::pair<std::string, TriangleSoup>> meshes = {
-        {"builtin", make_builtin_model()},   {"icosphere3", make_icosphere(3)},
-        {"torus", make_torus(32, 16)},       {"grid", make_grid_disk(30, 20)},
+        {"builtin", make_builtin_model()},
+        {"icosphere3", make_icosphere(3)},
+        {"torus", make_torus(32, 16)},
+        {"grid", make_grid_disk(30, 20)},
         {"genus3holes", make_genus_with_holes(3, 4, 4)},
     };
     for (const auto& [name, soup] : meshes) {
@@ -244,8 +244,7 @@ TEST(Encode, RoundTripOnBuiltStrips) {
         const auto s = encode_triangle_strip(a.faces);
         EXPECT_TRUE(same_faces(decode_triangle_strip(s), a.faces)) << name;
         EXPECT_GE(s.size(), a.faces.size() + 2) << name;
-        std::printf("[ measure ] %-12s strip of %zu triangles (%zu input): %.3f indices per strip triangle\n",
-                    name.c_str(), a.faces.size(), soup.triangles.size(),
-                    static_cast<double>(s.size()) / static_cast<double>(a.faces.size()));
+        std::printf("[ measure ] %-12s strip of %zu triangles (%zu input): %.3f indices per strip triangle\n", name.c_str(), a.faces.size(),
+                    soup.triangles.size(), static_cast<double>(s.size()) / static_cast<double>(a.faces.size()));
     }
 }

@@ -528,14 +528,26 @@ TEST(AwkwardGenerators, Cones) {
         const TriangleSoup open = make_cone(k, false);
         check_topology(open, {k + 1LL, k, 1, 1, 0}, what + " open");
         EXPECT_EQ(valences(open)[0], k);
+        long long c = 0;  // cap vertices: rings of halving size down to 3
+        for (long long n = k; n > 3;) c += n = std::max(3LL, (n + 1) / 2);
         const TriangleSoup closed = make_cone(k, true);
-        check_topology(closed, {k + 1LL, 2LL * k - 2, 2, 0, 0}, what + " capped");
+        check_topology(closed, {k + 1 + c, 2 * (k + c) - 2, 2, 0, 0}, what + " capped");
         EXPECT_GT(signed_volume6(closed), 0);
         const auto val = valences(closed);
         EXPECT_EQ(val[0], k);
-        // Halving keeps the ring's valences logarithmic: at most 2 new edges per level.
-        const size_t max_ring = *std::max_element(val.begin() + 1, val.end());
-        EXPECT_LE(static_cast<double>(max_ring), 4 + 2 * std::ceil(std::log2(static_cast<double>(k)))) << what;
+        // Only the apex has a high valence.
+        const size_t others = *std::max_element(val.begin() + 1, val.end());
+        EXPECT_LE(others, 9u) << what;
+        // The cap is flat, faces down, and has no sliver: twice the area of each face is at
+        // least a fixed fraction of its longest edge squared.
+        for (size_t f = k; f < closed.triangles.size(); ++f) {
+            const Triangle& t = closed.triangles[f];
+            const Point3 &a = closed.points[t[0]], &b = closed.points[t[1]], &d = closed.points[t[2]];
+            const double area2 = (b[0] - a[0]) * (d[1] - a[1]) - (b[1] - a[1]) * (d[0] - a[0]);
+            const double e = std::max(
+                {std::hypot(b[0] - a[0], b[1] - a[1]), std::hypot(d[0] - b[0], d[1] - b[1]), std::hypot(a[0] - d[0], a[1] - d[1])});
+            ASSERT_LT(area2, -0.05 * e * e) << what << " cap face " << f;
+        }
     }
 }
 

@@ -81,12 +81,11 @@ std::string validator_dir(std::string& why) {
         return {};
     }
     fs::path d = std::getenv("SINGLESTRIP_GLTF_VALIDATOR_DIR") ? fs::path(std::getenv("SINGLESTRIP_GLTF_VALIDATOR_DIR"))
-                                                                : exe_dir() / "gltf-validator";
+                                                               : exe_dir() / "gltf-validator";
     if (!fs::exists(d / "node_modules" / "gltf-validator" / "package.json")) {
         fs::create_directories(d);
-        const std::string log = run_capture("npm install --prefix '" + d.string() +
-                                                "' --no-audit --no-fund --loglevel=error gltf-validator 2>&1",
-                                            st);
+        const std::string log =
+            run_capture("npm install --prefix '" + d.string() + "' --no-audit --no-fund --loglevel=error gltf-validator 2>&1", st);
         if (st != 0 || !fs::exists(d / "node_modules" / "gltf-validator" / "package.json")) {
             reason = "cannot install the npm package gltf-validator into " + d.string() + ": " + log.substr(0, 400);
             why = reason;

@@ -23,7 +23,9 @@ using namespace singlestrip;
 
 namespace {
 
-std::string data(const std::string& name) { return std::string(SINGLESTRIP_SOURCE_DIR) + "/tests/data/" + name; }
+std::string data(const std::string& name) {
+    return std::string(SINGLESTRIP_SOURCE_DIR) + "/tests/data/" + name;
+}
 
 fs::path scratch_dir(const std::string& tag) {
     fs::path d = fs::temp_directory_path() / ("singlestrip-test-io-" + tag + "-" + std::to_string(::getpid()));

@@ -88,8 +88,7 @@ TEST(Mesh, RandomSplitsKeepEveryInvariant) {
             EXPECT_EQ(m.num_faces(), nf + 2);
             EXPECT_EQ(m.num_vertices(), nv + 1);
             EXPECT_EQ(s.vertex, nv);
-            for (int k = 0; k < 3; ++k)
-                EXPECT_DOUBLE_EQ(m.position(s.vertex)[k], 0.5 * (m.position(a)[k] + m.position(b)[k]));
+            for (int k = 0; k < 3; ++k) EXPECT_DOUBLE_EQ(m.position(s.vertex)[k], 0.5 * (m.position(a)[k] + m.position(b)[k]));
             EXPECT_EQ(m.parent(s.f_a), m.parent(s.f_b));
             EXPECT_EQ(m.parent(s.g_a), m.parent(s.g_b));
             EXPECT_NE(m.shared_halfedge(s.f_a, s.g_a), kNone);

@@ -41,19 +41,33 @@ void* probe_alloc(size_t n) {
     throw std::bad_alloc();
 }
 }  // namespace
-void* operator new(size_t n) { return probe_alloc(n); }
-void* operator new[](size_t n) { return probe_alloc(n); }
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
-void operator delete(void* p, size_t) noexcept { std::free(p); }
-void operator delete[](void* p, size_t) noexcept { std::free(p); }
+void* operator new(size_t n) {
+    return probe_alloc(n);
+}
+void* operator new[](size_t n) {
+    return probe_alloc(n);
+}
+void operator delete(void* p) noexcept {
+    std::free(p);
+}
+void operator delete[](void* p) noexcept {
+    std::free(p);
+}
+void operator delete(void* p, size_t) noexcept {
+    std::free(p);
+}
+void operator delete[](void* p, size_t) noexcept {
+    std::free(p);
+}
 
 using namespace singlestrip;
 namespace fs = std::filesystem;
 
 namespace {
 
-fs::path data_dir() { return fs::path(SINGLESTRIP_SOURCE_DIR) / "tests" / "data"; }
+fs::path data_dir() {
+    return fs::path(SINGLESTRIP_SOURCE_DIR) / "tests" / "data";
+}
 
 fs::path scratch_dir() {
     static const fs::path dir = [] {
@@ -91,8 +105,10 @@ struct Tally {
     size_t cases = 0, refused = 0, stripped = 0;
     std::vector<std::string> failures;
     void fail(const std::string& what) {
-        if (failures.size() < 20) failures.push_back(what);
-        else if (failures.size() == 20) failures.push_back("(more failures not shown)");
+        if (failures.size() < 20)
+            failures.push_back(what);
+        else if (failures.size() == 20)
+            failures.push_back("(more failures not shown)");
     }
 };
 
@@ -114,7 +130,8 @@ std::string check_file(const std::string& path, const std::string& label, Tally&
         soup = read_mesh_file(path);
     } catch (const InputError& e) {
         ++t.refused;
-        if (std::FILE* log = outcome_log()) std::fprintf(log, "%s\trefused\t%s\n", label.c_str(), e.what() + std::min(path.size(), std::strlen(e.what())));
+        if (std::FILE* log = outcome_log())
+            std::fprintf(log, "%s\trefused\t%s\n", label.c_str(), e.what() + std::min(path.size(), std::strlen(e.what())));
         if (std::string(e.what()).rfind(path, 0) != 0) return label + ": InputError does not name the file: " + e.what();
         return {};
     } catch (const std::exception& e) {
@@ -124,7 +141,8 @@ std::string check_file(const std::string& path, const std::string& label, Tally&
     fuzzcheck::Outcome outcome;
     if (auto p = fuzzcheck::check_pipeline(std::move(soup), {}, &outcome); !p.empty()) return label + ": " + p;
     ++(outcome == fuzzcheck::Outcome::Stripped ? t.stripped : t.refused);
-    if (std::FILE* log = outcome_log()) std::fprintf(log, "%s\t%s\n", label.c_str(), outcome == fuzzcheck::Outcome::Stripped ? "stripped" : "refused\t(pipeline)");
+    if (std::FILE* log = outcome_log())
+        std::fprintf(log, "%s\t%s\n", label.c_str(), outcome == fuzzcheck::Outcome::Stripped ? "stripped" : "refused\t(pipeline)");
     return {};
 }
 
@@ -208,17 +226,23 @@ std::string refused_cheaply(const std::string& bytes, const std::string& ext, si
     waitpid(pid, &st, 0);
     if (WIFSIGNALED(st)) return WTERMSIG(st) == SIGALRM ? "hang (killed after 60 s)" : "killed by signal " + std::to_string(WTERMSIG(st));
     switch (WEXITSTATUS(st)) {
-        case 0: return {};
-        case 10: return "accepted";
-        case 11: return "threw something other than InputError";
-        case 12: return "refused, but only after allocating more than " + std::to_string(max_alloc >> 20) + " MiB at once";
-        default: return "child exit " + std::to_string(WEXITSTATUS(st));
+        case 0:
+            return {};
+        case 10:
+            return "accepted";
+        case 11:
+            return "threw something other than InputError";
+        case 12:
+            return "refused, but only after allocating more than " + std::to_string(max_alloc >> 20) + " MiB at once";
+        default:
+            return "child exit " + std::to_string(WEXITSTATUS(st));
     }
 }
 
 std::string ply_header(const std::string& format, const std::string& nv, const std::string& nf, const std::string& list = "uchar int") {
-    return "ply\nformat " + format + " 1.0\nelement vertex " + nv + "\nproperty float x\nproperty float y\nproperty float z\nelement face " + nf +
-           "\nproperty list " + list + " vertex_indices\nend_header\n";
+    return "ply\nformat " + format + " 1.0\nelement vertex " + nv +
+           "\nproperty float x\nproperty float y\nproperty float z\nelement face " + nf + "\nproperty list " + list +
+           " vertex_indices\nend_header\n";
 }
 
 std::string binary_stl(uint32_t declared, size_t real) {
@@ -318,11 +342,16 @@ std::string check_file_isolated(const fs::path& path) {
     waitpid(pid, &st, 0);
     if (WIFSIGNALED(st)) return WTERMSIG(st) == SIGALRM ? "hang (killed after 60 s)" : "killed by signal " + std::to_string(WTERMSIG(st));
     switch (WEXITSTATUS(st)) {
-        case 1: return "finding (see stderr)";
-        case 2: return "allocated more than 64 MiB at once";
-        case 3: return "";  // stripped and verified
-        case 4: return "";  // refused cleanly
-        default: return "child exit " + std::to_string(WEXITSTATUS(st));
+        case 1:
+            return "finding (see stderr)";
+        case 2:
+            return "allocated more than 64 MiB at once";
+        case 3:
+            return "";  // stripped and verified
+        case 4:
+            return "";  // refused cleanly
+        default:
+            return "child exit " + std::to_string(WEXITSTATUS(st));
     }
 }
 

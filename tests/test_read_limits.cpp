@@ -14,11 +14,11 @@
 #include <array>
 #include <csignal>
 #include <cstdint>
-#include <limits>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <string>
 #include <thread>
 #include <vector>
@@ -87,11 +87,16 @@ std::string refused_path(const std::string& path, const std::vector<std::string>
     waitpid(pid, &st, 0);
     if (WIFSIGNALED(st)) return WTERMSIG(st) == SIGALRM ? "hang (killed after 120 s)" : "killed by signal " + std::to_string(WTERMSIG(st));
     switch (WEXITSTATUS(st)) {
-        case 0: break;
-        case 10: return "accepted";
-        case 11: return "bad_alloc (tried to allocate beyond 512 MiB)";
-        case 12: return "threw something other than InputError";
-        default: return "child exit " + std::to_string(WEXITSTATUS(st));
+        case 0:
+            break;
+        case 10:
+            return "accepted";
+        case 11:
+            return "bad_alloc (tried to allocate beyond 512 MiB)";
+        case 12:
+            return "threw something other than InputError";
+        default:
+            return "child exit " + std::to_string(WEXITSTATUS(st));
     }
     std::ifstream in(msg_file);
     const std::string msg((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -112,7 +117,9 @@ struct Pipe {
     Pipe(const std::string& name, std::string bytes) : path((scratch() / name).string()) {
         fs::remove(path);
         EXPECT_EQ(::mkfifo(path.c_str(), 0600), 0);
-        writer = std::thread([p = path, b = std::move(bytes)] { std::ofstream(p, std::ios::binary).write(b.data(), static_cast<std::streamsize>(b.size())); });
+        writer = std::thread([p = path, b = std::move(bytes)] {
+            std::ofstream(p, std::ios::binary).write(b.data(), static_cast<std::streamsize>(b.size()));
+        });
     }
     ~Pipe() {
         writer.join();
@@ -121,11 +128,14 @@ struct Pipe {
 };
 
 /// Reads `bytes` in-process (they are small and valid) and returns the number of triangles.
-size_t triangles_of(const std::string& bytes, const std::string& ext) { return read_mesh_file(write_file(bytes, ext)).triangles.size(); }
+size_t triangles_of(const std::string& bytes, const std::string& ext) {
+    return read_mesh_file(write_file(bytes, ext)).triangles.size();
+}
 
 std::string ply_header(const std::string& format, const std::string& nv, const std::string& nf, const std::string& list = "uchar int") {
-    return "ply\nformat " + format + " 1.0\nelement vertex " + nv + "\nproperty float x\nproperty float y\nproperty float z\nelement face " + nf +
-           "\nproperty list " + list + " vertex_indices\nend_header\n";
+    return "ply\nformat " + format + " 1.0\nelement vertex " + nv +
+           "\nproperty float x\nproperty float y\nproperty float z\nelement face " + nf + "\nproperty list " + list +
+           " vertex_indices\nend_header\n";
 }
 
 template <class T>
@@ -218,7 +228,7 @@ TEST(ReadLimits, OffColoursCgalCannotConvertAreRefused) {
     EXPECT_EQ(refused(v + "0 0 0 nan 0 0\n" + rest + faces, ".off", {"vertex 0", "nan"}), "");
     const std::string vs = v + "0 0 0 1 2 3\n" + rest;
     EXPECT_EQ(triangles_of(vs + "3 0 1 2 7\n3 1 3 2 0.5 0.5 0.5 1\n", ".off"), 2u);  // index, then rgba
-    EXPECT_EQ(triangles_of(vs + "3 0 1 2\n3 1 3 2 10 20 30\n", ".off"), 2u);        // colour only later
+    EXPECT_EQ(triangles_of(vs + "3 0 1 2\n3 1 3 2 10 20 30\n", ".off"), 2u);         // colour only later
     EXPECT_EQ(refused(vs + "3 0 1 2 -5\n3 1 3 2 1\n", ".off", {"face 0", "colour-map index -5"}), "");
     EXPECT_EQ(refused(vs + "3 0 1 2 1e12\n3 1 3 2 1\n", ".off", {"face 0", "colour-map index"}), "");
     EXPECT_EQ(refused(vs + "3 0 1 2 5 5\n3 1 3 2\n", ".off", {"face 0", "2 colour numbers"}), "");
@@ -240,7 +250,9 @@ TEST(ReadLimits, OffNumbersCgalCannotParseAreRefused) {
     EXPECT_EQ(refused(v + "0 0 inf 255 0 0\n" + rest + faces, ".off", {"vertex 0", "'inf'"}), "");
     EXPECT_EQ(refused(v + "0 +-0 0 255 0 0\n" + rest + faces, ".off", {"vertex 0", "'+-0'"}), "");
     EXPECT_EQ(refused(v + "0 0 0 255 0 0 infinity\n" + rest + faces, ".off", {"vertex 0", "'infinity'"}), "");
-    EXPECT_EQ(refused("CNOFF\n3 1 0\n0 0 0 nan 0 1 255 0 0\n1 0 0 0 0 1 0 255 0\n0 1 0 0 0 1 0 0 255\n3 0 1 2\n", ".off", {"vertex 0", "'nan'"}), "");
+    EXPECT_EQ(
+        refused("CNOFF\n3 1 0\n0 0 0 nan 0 1 255 0 0\n1 0 0 0 0 1 0 255 0\n0 1 0 0 0 1 0 0 255\n3 0 1 2\n", ".off", {"vertex 0", "'nan'"}),
+        "");
     const std::string vs = v + "0 0 0 1 2 3 1e30\n" + rest;
     EXPECT_EQ(refused(vs + "3 0 1 2 1 1 +-0\n3 1 3 2\n", ".off", {"face 0", "'+-0'"}), "");
     EXPECT_EQ(refused(vs + "3 0 1 2 5\n3 1 3 2 +-0\n", ".off", {"face 1", "'+-0'"}), "");
@@ -299,8 +311,12 @@ TEST(ReadLimits, PlyElementWithoutPropertiesIsRefusedNotLoopedOver) {
 }
 
 TEST(ReadLimits, PlyPropertyBeforeElementIsRefusedNotCrashed) {
-    EXPECT_EQ(refused("ply\nformat binary_little_endian 1.0\nproperty float x\nelement vertex 0\nend_header\n", ".ply", {"'property' before any 'element'"}), "");
-    EXPECT_EQ(refused("ply\nformat ascii 1.0\nproperty list uchar int vertex_indices\nend_header\n", ".ply", {"'property' before any 'element'"}), "");
+    EXPECT_EQ(refused("ply\nformat binary_little_endian 1.0\nproperty float x\nelement vertex 0\nend_header\n", ".ply",
+                      {"'property' before any 'element'"}),
+              "");
+    EXPECT_EQ(
+        refused("ply\nformat ascii 1.0\nproperty list uchar int vertex_indices\nend_header\n", ".ply", {"'property' before any 'element'"}),
+        "");
 }
 
 TEST(ReadLimits, PlyPropertyTypesCgalCannotConvertAreRefusedNotCrashed) {
@@ -310,10 +326,11 @@ TEST(ReadLimits, PlyPropertyTypesCgalCannotConvertAreRefusedNotCrashed) {
                       "property list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
                       ".ply", {"'x'", "int"}),
               "");
-    EXPECT_EQ(refused("ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty list uchar float z\nelement face 1\n"
-                      "property list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 1 0\n3 0 1 2\n",
-                      ".ply", {"'z'"}),
-              "");
+    EXPECT_EQ(
+        refused("ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty list uchar float z\nelement face 1\n"
+                "property list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 1 0\n3 0 1 2\n",
+                ".ply", {"'z'"}),
+        "");
     EXPECT_EQ(refused("ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\n"
                       "property list uchar int vertex_indices\nelement halfedge 1\nproperty int source\nproperty int target\nend_header\n"
                       "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n0 1\n",
@@ -326,21 +343,27 @@ TEST(ReadLimits, PlyPropertyTypesCgalCannotConvertAreRefusedNotCrashed) {
 TEST(ReadLimits, PlyColourPropertiesOfMixedTypesAreRefused) {
     auto ply = [](const std::string& element, const std::string& props, const std::string& vertex_extra, const std::string& face_extra) {
         const bool v = element == "vertex";
-        return "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n" + (v ? props : std::string()) +
-               "element face 1\nproperty list uchar int vertex_indices\n" + (v ? std::string() : props) + "end_header\n0 0 0" + vertex_extra + "\n1 0 0" +
-               vertex_extra + "\n0 1 0" + vertex_extra + "\n3 0 1 2" + face_extra + "\n";
+        return "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n" +
+               (v ? props : std::string()) + "element face 1\nproperty list uchar int vertex_indices\n" + (v ? std::string() : props) +
+               "end_header\n0 0 0" + vertex_extra + "\n1 0 0" + vertex_extra + "\n0 1 0" + vertex_extra + "\n3 0 1 2" + face_extra + "\n";
     };
     const std::string mixed = "property uchar red\nproperty float green\nproperty uchar g\nproperty uchar blue\n";
     EXPECT_EQ(refused(ply("vertex", mixed, " 1 0.5 2 3", ""), ".ply", {"'green'", "float"}), "");
-    EXPECT_EQ(refused(ply("face", "property uchar red\nproperty uchar green\nproperty float blue\nproperty uchar b\n", "", " 1 2 0.5 3"), ".ply",
-                      {"element 'face'", "'blue'"}),
+    EXPECT_EQ(refused(ply("face", "property uchar red\nproperty uchar green\nproperty float blue\nproperty uchar b\n", "", " 1 2 0.5 3"),
+                      ".ply", {"element 'face'", "'blue'"}),
               "");
-    EXPECT_EQ(refused(ply("vertex", "property uchar r\nproperty uchar green\nproperty float g\nproperty uchar b\n", " 1 2 0.5 3", ""), ".ply", {"'g'"}), "");
+    EXPECT_EQ(refused(ply("vertex", "property uchar r\nproperty uchar green\nproperty float g\nproperty uchar b\n", " 1 2 0.5 3", ""),
+                      ".ply", {"'g'"}),
+              "");
     // Colours CGAL reads, and float colours it ignores, still read.
     EXPECT_EQ(triangles_of(ply("vertex", "property uchar red\nproperty uchar green\nproperty uchar blue\n", " 1 2 3", ""), ".ply"), 1u);
     EXPECT_EQ(triangles_of(ply("face", "property uchar r\nproperty uchar g\nproperty uchar b\n", "", " 1 2 3"), ".ply"), 1u);
-    EXPECT_EQ(triangles_of(ply("vertex", "property float red\nproperty float green\nproperty float blue\n", " 0.1 0.2 0.3", ""), ".ply"), 1u);
-    EXPECT_EQ(triangles_of(ply("vertex", "property uchar red\nproperty uchar green\nproperty uchar blue\nproperty float r\n", " 1 2 3 0.5", ""), ".ply"), 1u);
+    EXPECT_EQ(triangles_of(ply("vertex", "property float red\nproperty float green\nproperty float blue\n", " 0.1 0.2 0.3", ""), ".ply"),
+              1u);
+    EXPECT_EQ(
+        triangles_of(ply("vertex", "property uchar red\nproperty uchar green\nproperty uchar blue\nproperty float r\n", " 1 2 3 0.5", ""),
+                     ".ply"),
+        1u);
 }
 
 TEST(ReadLimits, BinaryPlyListCountsAreBoundedByTheRemainingBytes) {
@@ -369,7 +392,9 @@ TEST(ReadLimits, BinaryPlyListCountsAreBoundedByTheRemainingBytes) {
 
 TEST(ReadLimits, AsciiPlyWideListCountsAreBounded) {
     const std::string body = "0 0 0\n1 0 0\n0 1 0\n";
-    EXPECT_EQ(refused(ply_header("ascii", "3", "1", "int int") + body + "2000000000 0 1 2\n", ".ply", {"list 'vertex_indices'", "2000000000"}), "");
+    EXPECT_EQ(
+        refused(ply_header("ascii", "3", "1", "int int") + body + "2000000000 0 1 2\n", ".ply", {"list 'vertex_indices'", "2000000000"}),
+        "");
     EXPECT_EQ(refused(ply_header("ascii", "3", "1", "uint int") + body + "4294967295 0 1 2\n", ".ply", {"list 'vertex_indices'"}), "");
     EXPECT_EQ(refused(ply_header("ascii", "3", "1", "int int") + body + "-5 0 1 2\n", ".ply", {"list 'vertex_indices'"}), "");
 }
@@ -385,7 +410,8 @@ TEST(ReadLimits, AsciiPlyNarrowListCountsAndTruncationAreRefused) {
     EXPECT_EQ(refused(ply_header("ascii", "3", "1", "char int") + body + "200 0 1 2\n", ".ply", {"out of range", "'200'"}), "");
     EXPECT_EQ(refused(ply_header("ascii", "3", "1", "short int") + body + "-1 0 1 2\n", ".ply", {"bad count"}), "");
     EXPECT_EQ(refused(ply_header("ascii", "3", "1", "uchar int") + body + "3 0 1 2.5\n", ".ply", {"cannot parse"}), "");
-    EXPECT_EQ(refused(ply_header("ascii", "3", "1", "uchar int") + "0 0 nan\n1 0 0\n0 1 0\n3 0 1 2\n", ".ply", {"cannot parse", "'nan'"}), "");
+    EXPECT_EQ(refused(ply_header("ascii", "3", "1", "uchar int") + "0 0 nan\n1 0 0\n0 1 0\n3 0 1 2\n", ".ply", {"cannot parse", "'nan'"}),
+              "");
     // Counts at the top of their range, trailing data after the last element, CRLF: still read.
     EXPECT_EQ(triangles_of(ply_header("ascii", "3", "1", "ushort int") + body + "3 0 1 2\nextra bytes\n", ".ply"), 1u);
     EXPECT_EQ(triangles_of(ply_header("ascii", "3", "1", "char int") + "0 0 0\r\n1 0 0\r\n0 1 0\r\n3 0 1 2\r\n", ".ply"), 1u);
@@ -435,8 +461,9 @@ TEST(ReadLimits, ObjHugeFaceLinesAreHarmless) {
 TEST(ReadLimits, FuzzReproducersAreCleanInputErrors) {
     const fs::path dir = fs::path(SINGLESTRIP_SOURCE_DIR) / "fuzz" / "repro";
     if (!fs::exists(dir)) GTEST_SKIP() << "no fuzz/repro";
-    for (const char* name : {"off_huge_counts.off", "off_huge_face_corner_count.off", "off_negative_index_ub.off", "ply_element_without_properties_hang.ply",
-                             "ply_huge_list_count.ply", "ply_property_before_element.ply", "ply_int_coordinate.ply"}) {
+    for (const char* name :
+         {"off_huge_counts.off", "off_huge_face_corner_count.off", "off_negative_index_ub.off", "ply_element_without_properties_hang.ply",
+          "ply_huge_list_count.ply", "ply_property_before_element.ply", "ply_int_coordinate.ply"}) {
         SCOPED_TRACE(name);
         const fs::path p = dir / name;
         if (!fs::exists(p)) continue;
@@ -480,7 +507,9 @@ TEST(ReadLimits, InputsLargerThanTheLimitAreRefused) {
         (void)read_mesh_file(path, limited_to(off.size() - 1));
         ADD_FAILURE() << "a file one byte over the limit was read";
     } catch (const InputError& e) {
-        EXPECT_NE(std::string(e.what()).find("larger than the input limit of " + std::to_string(off.size() - 1) + " bytes"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("larger than the input limit of " + std::to_string(off.size() - 1) + " bytes"),
+                  std::string::npos)
+            << e.what();
     }
     std::signal(SIGPIPE, SIG_IGN);  // the writer is left with a closed pipe: EPIPE, not a signal
     std::string endless = off + "# ";
@@ -580,8 +609,9 @@ TEST(ReadLimits, ObjCommentGluedToAnIndexIsRefused) {
 
 // diagnose_ply summed header counts in a long long (F26, UBSan: signed overflow).
 TEST(ReadLimits, PlyHeaderCountsThatOverflowASumAreRefused) {
-    const std::string mesh = "element vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
-                             "element face 1\nproperty list uchar int vertex_indices\n";
+    const std::string mesh =
+        "element vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+        "element face 1\nproperty list uchar int vertex_indices\n";
     std::string h = "ply\nformat ascii 1.0\n" + mesh;
     for (int i = 0; i < 10; ++i) h += "element e" + std::to_string(i) + " 999999999999999999\nproperty float a\n";
     EXPECT_EQ(refused(h + "end_header\n1 2 3 4\n", ".ply", {"truncated PLY"}), "");
@@ -594,22 +624,29 @@ TEST(ReadLimits, PlyHeaderCountsThatOverflowASumAreRefused) {
 // items are refused first. CGAL uses only the first property of a name, so later namesakes of
 // another type are not refused (they were, wrongly).
 TEST(ReadLimits, PlyItemsCgalWouldStoreUselesslyAreRefused) {
-    std::string v = "ply\nformat binary_little_endian 1.0\nelement vertex 1000\nproperty uchar q\nelement face 0\nproperty list uchar int vertex_indices\nend_header\n";
+    std::string v =
+        "ply\nformat binary_little_endian 1.0\nelement vertex 1000\nproperty uchar q\nelement face 0\nproperty list uchar int "
+        "vertex_indices\nend_header\n";
     EXPECT_EQ(refused(v + std::string(1000, '\0'), ".ply", {"element 'vertex'", "no property 'x'"}), "");
     std::string f = ply_header("binary_little_endian", "3", "1000");
     f.append(36, '\0');
     EXPECT_EQ(refused(f + std::string(1000, '\0'), ".ply", {"face 0", "0 vertices"}), "");
     const std::string body = "0 0 0\n1 0 0\n0 1 0\n";
     EXPECT_EQ(refused(ply_header("ascii", "3", "2") + body + "3 0 1 2\n2 0 1\n", ".ply", {"face 1", "2 vertices"}), "");
-    EXPECT_EQ(refused(ply_header("ascii", "3", "1", "uchar uchar") + body + "3 0 1 2\n", ".ply", {"no 'vertex_indices'", "int or uint"}), "");
+    EXPECT_EQ(refused(ply_header("ascii", "3", "1", "uchar uchar") + body + "3 0 1 2\n", ".ply", {"no 'vertex_indices'", "int or uint"}),
+              "");
     // vertex_index is read when vertex_indices is not an int list; later namesakes are ignored.
-    EXPECT_EQ(triangles_of("ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nproperty list uchar float x\n"
-                           "element face 1\nproperty list uchar int vertex_index\nend_header\n0 0 0 1 5\n1 0 0 0\n0 1 0 0\n3 0 1 2\n",
-                           ".ply"),
-              1u);
-    EXPECT_EQ(triangles_of("ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\n"
-                           "property list uchar int vertex_indices\nelement halfedge 1\nproperty uint source\nproperty uint target\nproperty int source\n"
-                           "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n0 1 -1\n",
-                           ".ply"),
-              1u);
+    EXPECT_EQ(
+        triangles_of(
+            "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nproperty list uchar float x\n"
+            "element face 1\nproperty list uchar int vertex_index\nend_header\n0 0 0 1 5\n1 0 0 0\n0 1 0 0\n3 0 1 2\n",
+            ".ply"),
+        1u);
+    EXPECT_EQ(
+        triangles_of(
+            "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\n"
+            "property list uchar int vertex_indices\nelement halfedge 1\nproperty uint source\nproperty uint target\nproperty int source\n"
+            "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n0 1 -1\n",
+            ".ply"),
+        1u);
 }

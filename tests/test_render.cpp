@@ -34,7 +34,9 @@ namespace fs = std::filesystem;
 
 #ifndef SINGLESTRIP_HAVE_RENDER
 
-TEST(Render, NotBuilt) { GTEST_SKIP() << "render/ not built (needs libosmesa6-dev and libpng-dev)"; }
+TEST(Render, NotBuilt) {
+    GTEST_SKIP() << "render/ not built (needs libosmesa6-dev and libpng-dev)";
+}
 
 #else
 
@@ -127,7 +129,9 @@ void check_coverage(const std::vector<Case>& cases) {
 
 }  // namespace
 
-TEST(Render, StripAndInputGiveIdenticalCulledCoverage) { check_coverage(generated_cases()); }
+TEST(Render, StripAndInputGiveIdenticalCulledCoverage) {
+    check_coverage(generated_cases());
+}
 
 TEST(Render, RealMeshesStripAndInputGiveIdenticalCulledCoverage) {
     const std::vector<Case> cs = real_cases();

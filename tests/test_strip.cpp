@@ -1,9 +1,11 @@
 // One strip on every oriented manifold: procedural families and thousands of random meshes,
-// every result checked by the independent verifier (verify.hpp).
+// every result checked by the independent verifier (verify.hpp). Every test runs on both engines
+// (test names end in /matching or /growth).
 #include <gtest/gtest.h>
 
 #include <random>
 
+#include "singlestrip/cycles.hpp"
 #include "singlestrip/errors.hpp"
 #include "singlestrip/generators.hpp"
 #include "singlestrip/mesh.hpp"
@@ -16,9 +18,9 @@ using singlestrip::testing::strip_and_verify;
 
 namespace {
 
-void expect_one_strip(const TriangleSoup& soup, const std::string& name, const StripOptions& options = {}) {
+void expect_one_strip(const TriangleSoup& soup, const std::string& name, const StripOptions& options) {
     const auto c = strip_and_verify(soup, options);
-    EXPECT_TRUE(c.report.ok()) << name << ": " << describe(c);
+    EXPECT_TRUE(c.report.ok()) << name << " (" << engine_name(options.engine) << "): " << describe(c);
     EXPECT_EQ(c.arrays.faces.size(), soup.triangles.size() + 2 * c.result.stats.splits) << name;
     // docs/algorithm.md: splits < input faces.
     EXPECT_LT(c.result.stats.splits, std::max<size_t>(1, soup.triangles.size())) << name;
@@ -57,31 +59,47 @@ std::vector<Family> families() {
     return f;
 }
 
+class Strip : public ::testing::TestWithParam<StripEngine> {
+protected:
+    /// Default options on the engine under test.
+    StripOptions opts() const {
+        StripOptions o;
+        o.engine = GetParam();
+        return o;
+    }
+};
+
+std::string engine_test_name(const ::testing::TestParamInfo<StripEngine>& info) {
+    return engine_name(info.param);
+}
+
 }  // namespace
 
-TEST(Strip, ProceduralFamilies) {
+INSTANTIATE_TEST_SUITE_P(Engines, Strip, ::testing::Values(StripEngine::Matching, StripEngine::Growth), engine_test_name);
+
+TEST_P(Strip, ProceduralFamilies) {
     for (const auto& fam : families()) {
         SCOPED_TRACE(fam.name);
-        expect_one_strip(fam.soup, fam.name);
-        StripOptions paper;
+        expect_one_strip(fam.soup, fam.name, opts());
+        StripOptions paper = opts();
         paper.greedy = false;
         expect_one_strip(fam.soup, fam.name + " (no greedy)", paper);
     }
 }
 
-TEST(Strip, ProceduralFamiliesWithEdgeFlips) {
+TEST_P(Strip, ProceduralFamiliesWithEdgeFlips) {
     for (auto fam : families()) {
         if (fam.soup.triangles.size() < 8) continue;
         jitter(fam.soup, 11);
         random_edge_flips(fam.soup, fam.soup.triangles.size() / 3, 7);
-        expect_one_strip(fam.soup, fam.name + " flipped");
+        expect_one_strip(fam.soup, fam.name + " flipped", opts());
     }
 }
 
-TEST(Strip, EverySeedFaceOfSmallMeshes) {
+TEST_P(Strip, EverySeedFaceOfSmallMeshes) {
     for (const auto& fam : {make_grid_disk(5, 5), make_torus(6, 4), make_disk_with_holes(2, 2), make_genus_surface(2, 1)}) {
         for (uint32_t f = 0; f < fam.triangles.size(); ++f) {
-            StripOptions o;
+            StripOptions o = opts();
             o.seed_face = f;
             o.validate_each_split = true;
             expect_one_strip(fam, "seed " + std::to_string(f), o);
@@ -90,7 +108,7 @@ TEST(Strip, EverySeedFaceOfSmallMeshes) {
 }
 
 // 2000 random meshes: random family, size, genus 0-5, holes, edge flips and seed face.
-TEST(Strip, ThousandsOfRandomMeshes) {
+TEST_P(Strip, ThousandsOfRandomMeshes) {
     std::mt19937_64 rng(20261122);
     int checked = 0;
     for (int i = 0; i < 2000; ++i) {
@@ -143,7 +161,7 @@ TEST(Strip, ThousandsOfRandomMeshes) {
             } catch (const RequestError&) {
             }
         }
-        StripOptions o;
+        StripOptions o = opts();
         if (rng() % 2) o.seed_face = static_cast<uint32_t>(rng() % soup.triangles.size());
         o.greedy = rng() % 5 != 0;
         SCOPED_TRACE(name + " case " + std::to_string(i));
@@ -154,22 +172,24 @@ TEST(Strip, ThousandsOfRandomMeshes) {
     EXPECT_EQ(checked, 2000);
 }
 
-TEST(Strip, SplitsStayBelowThePapersOnSyntheticDisks) {
+TEST_P(Strip, SplitsStayBelowThePapersOnSyntheticDisks) {
     // A measured bound, not a timing: on a 40x40 grid disk the strip adds less than the paper's
     // +28.5% (fandisk) extra triangles.
-    const auto c = strip_and_verify(make_grid_disk(40, 40));
+    const auto c = strip_and_verify(make_grid_disk(40, 40), opts());
     ASSERT_TRUE(c.report.ok()) << describe(c);
     EXPECT_LT(c.arrays.faces.size(), 1.285 * 3200);
 }
 
-TEST(Strip, BadSeedFaceIsARequestError) {
-    StripOptions o;
+TEST_P(Strip, BadSeedFaceIsARequestError) {
+    StripOptions o = opts();
     o.seed_face = 99;
     EXPECT_THROW(build_strip(Mesh::from_soup(make_two_triangles()), o), RequestError);
 }
 
-TEST(Strip, FundamentalTrianglesMatchTopology) {
-    // Seed on the boundary (default): 2g + b - 1 fundamental triangles; closed: 2g.
+TEST_P(Strip, FundamentalTrianglesMatchTopology) {
+    // Seed on the boundary (default): the growth builder records 2g + b - 1 fundamental triangles
+    // (closed: 2g). Any engine's strip order gives them by replay (cycles.hpp): beta1 falls from
+    // 2g + b - 1 to 0, so at least that many. Either way, exactly that many independent cycles.
     struct Case {
         TriangleSoup soup;
         uint32_t expected;
@@ -180,8 +200,24 @@ TEST(Strip, FundamentalTrianglesMatchTopology) {
     cases.push_back({make_disk_with_holes(4, 2), 4});
     cases.push_back({make_genus_with_holes(2, 3, 3), 6});
     for (const auto& c : cases) {
-        const auto r = build_strip(Mesh::from_soup(c.soup));
-        EXPECT_EQ(r.stats.fundamental_triangles, c.expected);
-        EXPECT_EQ(r.fundamental_positions.size(), c.expected);
+        const auto check = strip_and_verify(c.soup, opts());
+        EXPECT_TRUE(check.report.ok()) << describe(check);
+        EXPECT_EQ(check.result.stats.engine, GetParam());
+        if (GetParam() == StripEngine::Growth) {
+            EXPECT_EQ(check.result.stats.fundamental_triangles, c.expected);
+            EXPECT_EQ(check.result.fundamental_positions.size(), c.expected);
+        }
+        EXPECT_GE(replay_fundamental_positions(check.result.mesh, check.result.order).size(), c.expected);
+        const Cycles cycles = compute_fundamental_cycles(check.result);
+        VerifyInput in;
+        in.in_points = c.soup.points;
+        in.in_faces = c.soup.triangles;
+        in.out_points = check.arrays.points;
+        in.out_faces = check.arrays.faces;
+        in.out_parent = check.arrays.parent;
+        in.cycles = cycles.cycles;
+        const VerifyReport rep = verify(in);
+        EXPECT_TRUE(rep.ok()) << rep.to_string();
+        EXPECT_EQ(rep.cycle_rank, c.expected);
     }
 }

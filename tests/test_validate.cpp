@@ -20,7 +20,9 @@ using namespace singlestrip;
 
 namespace {
 
-std::string data(const std::string& name) { return std::string(SINGLESTRIP_SOURCE_DIR) + "/tests/data/" + name; }
+std::string data(const std::string& name) {
+    return std::string(SINGLESTRIP_SOURCE_DIR) + "/tests/data/" + name;
+}
 
 std::vector<std::string> kinds(const std::vector<SoupProblem>& ps) {
     std::vector<std::string> k;
@@ -46,7 +48,9 @@ std::string prepare_error(const TriangleSoup& s, const std::string& name, bool o
     return "(no error)";
 }
 
-void flip(TriangleSoup& s, size_t f) { std::swap(s.triangles[f][1], s.triangles[f][2]); }
+void flip(TriangleSoup& s, size_t f) {
+    std::swap(s.triangles[f][1], s.triangles[f][2]);
+}
 
 }  // namespace
 
@@ -59,9 +63,9 @@ TEST(Diagnose, ValidProceduralMeshesHaveNoProblemsAndRightTopology) {
         long long genus;
     };
     const std::vector<Case> cases = {
-        {"icosphere", make_icosphere(2), 2, 0, 0},          {"torus", make_torus(12, 8), 0, 0, 1},
-        {"genus3", make_genus_surface(3, 2), -4, 0, 3},     {"disk with 3 holes", make_disk_with_holes(3, 2), -2, 4, 0},
-        {"annulus", make_annulus(8, 2), 0, 2, 0},           {"grid", make_grid_disk(4, 3), 1, 1, 0},
+        {"icosphere", make_icosphere(2), 2, 0, 0},      {"torus", make_torus(12, 8), 0, 0, 1},
+        {"genus3", make_genus_surface(3, 2), -4, 0, 3}, {"disk with 3 holes", make_disk_with_holes(3, 2), -2, 4, 0},
+        {"annulus", make_annulus(8, 2), 0, 2, 0},       {"grid", make_grid_disk(4, 3), 1, 1, 0},
         {"builtin", make_builtin_model(), -2, 0, 2},
     };
     for (const auto& c : cases) {
@@ -258,8 +262,8 @@ std::vector<std::string> reference_duplicates(const TriangleSoup& s) {
         if (faces.size() < 2) continue;
         std::string list;
         for (size_t i = 0; i < faces.size(); ++i) list += (i ? ", " : "") + std::to_string(faces[i]);
-        out.push_back("faces " + list + " are duplicates (same vertices " + std::to_string(key[0]) + ", " + std::to_string(key[1]) +
-                      ", " + std::to_string(key[2]) + ")");
+        out.push_back("faces " + list + " are duplicates (same vertices " + std::to_string(key[0]) + ", " + std::to_string(key[1]) + ", " +
+                      std::to_string(key[2]) + ")");
     }
     return out;
 }
@@ -272,7 +276,8 @@ std::vector<std::string> reference_fans(const TriangleSoup& s) {
     for (uint32_t v = 0; v < s.points.size(); ++v) {
         std::vector<size_t> at;  // usable faces at v
         for (size_t f = 0; f < s.triangles.size(); ++f)
-            if (usable(s.triangles[f]) && std::find(s.triangles[f].begin(), s.triangles[f].end(), v) != s.triangles[f].end()) at.push_back(f);
+            if (usable(s.triangles[f]) && std::find(s.triangles[f].begin(), s.triangles[f].end(), v) != s.triangles[f].end())
+                at.push_back(f);
         std::vector<size_t> comp(at.size());
         std::iota(comp.begin(), comp.end(), size_t{0});
         // Faces at v sharing an edge (v, w) are in one fan; relabel until stable (tiny inputs).
@@ -283,7 +288,8 @@ std::vector<std::string> reference_fans(const TriangleSoup& s) {
                     if (comp[i] == comp[j]) continue;
                     bool share = false;
                     for (uint32_t w : s.triangles[at[i]])
-                        if (w != v && std::find(s.triangles[at[j]].begin(), s.triangles[at[j]].end(), w) != s.triangles[at[j]].end()) share = true;
+                        if (w != v && std::find(s.triangles[at[j]].begin(), s.triangles[at[j]].end(), w) != s.triangles[at[j]].end())
+                            share = true;
                     if (share) {
                         const size_t lo = std::min(comp[i], comp[j]);
                         comp[i] = comp[j] = lo;
@@ -294,7 +300,8 @@ std::vector<std::string> reference_fans(const TriangleSoup& s) {
         std::sort(comp.begin(), comp.end());
         const auto fans = static_cast<size_t>(std::unique(comp.begin(), comp.end()) - comp.begin());
         if (fans > 1)
-            out.push_back("vertex " + std::to_string(v) + " is where " + std::to_string(fans) + " separate fans of faces meet (non-manifold vertex)");
+            out.push_back("vertex " + std::to_string(v) + " is where " + std::to_string(fans) +
+                          " separate fans of faces meet (non-manifold vertex)");
     }
     return out;
 }

@@ -36,7 +36,9 @@ bool has_failure(const ss::VerifyReport& r, const std::string& check, const std:
     return false;
 }
 
-bool has_failure_prefix(const ss::VerifyReport& r, const std::string& check) { return has_failure(r, check); }
+bool has_failure_prefix(const ss::VerifyReport& r, const std::string& check) {
+    return has_failure(r, check);
+}
 
 // Unit square 0(0,0) 1(1,0) 2(1,1) 3(0,1), two CCW triangles sharing the diagonal 0-2.
 ss::VerifyInput quad() {
@@ -477,16 +479,13 @@ TEST(VerifyCatches, TorusFaceDroppedChangesTopology) {
 class VerifyFiles : public ::testing::Test {
 protected:
     void SetUp() override {
-        dir_ = std::filesystem::temp_directory_path() /
-               ("ss_verify_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "_" +
-                ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        dir_ = std::filesystem::temp_directory_path() / ("ss_verify_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
+                                                         "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
         std::filesystem::create_directories(dir_);
     }
     void TearDown() override { std::filesystem::remove_all(dir_); }
     std::string path(const std::string& name) const { return (dir_ / name).string(); }
-    static void write(const std::string& p, const std::string& text) {
-        std::ofstream(p, std::ios::binary) << text;
-    }
+    static void write(const std::string& p, const std::string& text) { std::ofstream(p, std::ios::binary) << text; }
     std::filesystem::path dir_;
 };
 
@@ -498,11 +497,10 @@ void put_le(std::string& s, T v) {
     s.append(b, sizeof(T));
 }
 
-std::string binary_ply(const std::vector<Point3>& pts, const std::vector<Triangle>& faces,
-                       const std::vector<uint32_t>& parent) {
+std::string binary_ply(const std::vector<Point3>& pts, const std::vector<Triangle>& faces, const std::vector<uint32_t>& parent) {
     std::string s = "ply\nformat binary_little_endian 1.0\ncomment test\nelement vertex " + std::to_string(pts.size()) +
-                    "\nproperty double x\nproperty double y\nproperty double z\nelement face " +
-                    std::to_string(faces.size()) + "\nproperty list uchar uint vertex_indices\nproperty uint parent\nend_header\n";
+                    "\nproperty double x\nproperty double y\nproperty double z\nelement face " + std::to_string(faces.size()) +
+                    "\nproperty list uchar uint vertex_indices\nproperty uint parent\nend_header\n";
     for (const auto& p : pts)
         for (double c : p) put_le(s, c);
     for (size_t f = 0; f < faces.size(); ++f) {
@@ -533,8 +531,9 @@ TEST_F(VerifyFiles, AsciiPlyObjOffRoundTrip) {
     EXPECT_EQ(m.faces, in.out_faces);
     EXPECT_TRUE(m.parent.empty());
 
-    write(path("o.obj"), "# test\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0.5 0.5 0\nvn 0 0 1\n"
-                         "f 1 2 5\nf 5/1/1 2//1 3\nf -1 -3 -2\ng x\nf 1 5 4\n");
+    write(path("o.obj"),
+          "# test\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0.5 0.5 0\nvn 0 0 1\n"
+          "f 1 2 5\nf 5/1/1 2//1 3\nf -1 -3 -2\ng x\nf 1 5 4\n");
     m = ss::read_output_mesh(path("o.obj"));
     EXPECT_EQ(m.points, in.out_points);
     EXPECT_EQ(m.faces, in.out_faces);
@@ -697,8 +696,7 @@ TEST_P(VerifyReal, BuiltStripPassesAndMutationsAreCaught) {
 
 INSTANTIATE_TEST_SUITE_P(Real, VerifyReal,
                          ::testing::Values(RealCase{"head.off", 0, 3}, RealCase{"eight.off", 2, 0},
-                                           RealCase{"elephant-with-holes.off", 3, 106},
-                                           RealCase{"cheese.off", 133, 0}),
+                                           RealCase{"elephant-with-holes.off", 3, 106}, RealCase{"cheese.off", 133, 0}),
                          [](const auto& param_info) {
                              std::string n = param_info.param.file;
                              n = n.substr(0, n.find('.'));

@@ -142,9 +142,11 @@ TriangleSoup make_eared_grid(uint32_t nx, uint32_t ny);
 
 /// A cone whose apex (vertex 0, at z=1) has valence k: k side triangles to a ring of k vertices
 /// (1..k, unit circle, z=0). Open (capped=false): the ring is the boundary, the apex interior;
-/// V=k+1, F=k, chi=1, b=1. Capped: the base polygon is triangulated by repeated halving (every
-/// other ring vertex kept per level, so ring valences stay O(log k)); outward normals;
-/// V=k+1, F=2k-2, chi=2, b=0. g=0. \pre k >= 3.
+/// V=k+1, F=k, chi=1, b=1. Capped: a flat disk facing down closes the ring: concentric rings of
+/// n_1 = max(3, ceil(k/2)), n_2 = max(3, ceil(n_1/2)), ... vertices down to 3 (each zipped to
+/// the previous one), then one triangle; every cap vertex has a small valence and every face is
+/// well shaped. With c = n_1 + n_2 + ... (about k): V=k+1+c, F=2(k+c)-2, chi=2, b=0. g=0.
+/// \pre k >= 3.
 TriangleSoup make_cone(uint32_t k, bool capped);
 
 enum class AwkwardFamily : uint8_t {
@@ -155,7 +157,7 @@ enum class AwkwardFamily : uint8_t {
     ManyHoles,        ///< make_disk_many_holes
     Ears,             ///< make_eared_grid(nx, 4)
     OpenCone,         ///< make_cone(k, false)
-    ClosedCone,       ///< make_cone(k, true)
+    ClosedCone,       ///< make_cone(k, true), about 4k faces
 };
 inline constexpr AwkwardFamily kAwkwardFamilies[] = {AwkwardFamily::HoleCorridors,   AwkwardFamily::SlitCorridors, AwkwardFamily::SlitWalls,
                                                      AwkwardFamily::SerpentineWalls, AwkwardFamily::ManyHoles,     AwkwardFamily::Ears,

@@ -35,7 +35,11 @@ std::vector<std::vector<uint32_t>> tree_cotree_generators(const Mesh& mesh,
 /// Homology classes in H1(M; Z2) of closed face chains, by intersection parity with the
 /// relative cycles (leftover edge + T paths) of the tree–cotree above: two chains are homologous
 /// iff their class vectors are equal; a set is independent iff its vectors are (z2_rank()).
-/// Construction O(V + F); classify() O(V + F + chain length) per chain.
+/// The chain's crossings of a tree edge flip the parity of every tree path through it, i.e. of
+/// the leftover endpoints in the edge's subtree: numbered in preorder, a subtree is an interval,
+/// so a chain costs its crossings and the leftover endpoints under them, never a pass over V.
+/// Construction O(V + F); classify() O(n log n + dim/64 + endpoints under the crossed tree edges)
+/// for a chain of n faces (at most O(n log n + dim)).
 class HomologyClassifier {
 public:
     /// \pre as tree_cotree_generators().
@@ -45,15 +49,23 @@ public:
     /// Class of a closed chain of MESH faces (consecutive entries and last -> first adjacent).
     /// \throw InternalError if two consecutive faces are not adjacent.
     [[nodiscard]] std::vector<uint64_t> classify(const std::vector<uint32_t>& mesh_faces) const;
+    /// The tree–cotree generator of class bit j (as tree_cotree_generators() builds it, MESH
+    /// faces): its class is the j-th unit vector. \pre j < dimension(). O(its length).
+    [[nodiscard]] std::vector<uint32_t> generator(size_t j) const;
+    /// Its number of faces, without building it. O(its length), no allocation.
+    [[nodiscard]] size_t generator_length(size_t j) const;
 
 private:
     const Mesh* mesh_;
-    std::vector<uint32_t> q_;             ///< vertex -> quotient vertex
+    std::vector<uint32_t> fparent_, depth_;  ///< cotree parent face and depth per face
+    std::vector<uint32_t> leftover_he_;      ///< leftover edge -> representative half-edge
     std::vector<uint32_t> edge_of_he_;    ///< half-edge -> interior edge id (kNone on boundary)
-    std::vector<uint32_t> edge_he_;       ///< interior edge -> representative half-edge
-    std::vector<uint32_t> tree_order_;    ///< quotient vertices in BFS order (root first)
-    std::vector<uint32_t> tree_parent_edge_;  ///< quotient vertex -> edge to its parent
     std::vector<uint32_t> leftover_;      ///< leftover edge ids (one per class bit)
+    std::vector<uint32_t> bit_of_edge_;   ///< interior edge -> its class bit if leftover, else kNone
+    /// Interior edge -> preorder interval [first, last) of the leftover endpoints (indices into
+    /// end_bit_) in the subtree below it, if it is a tree edge; else first == last.
+    std::vector<uint32_t> under_first_, under_last_;
+    std::vector<uint32_t> end_bit_;       ///< leftover endpoints in preorder of their vertex: class bit
 };
 
 /// Rank over Z2 of bit-vector rows (all of the same length). O(rows^2 * words).

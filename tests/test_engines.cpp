@@ -1,0 +1,499 @@
+// Both strip engines on random and hostile inputs (issue 15, item 6). Every strip is checked by
+// the independent verifier (verify.hpp); the only other assertions are the guarantees of
+// strip.hpp: one strip covering the input, splits bounded by the input face count, separating
+// constraints refused with the pieces' sizes. No timing and no quality targets here
+// (scripts/bench measures those). Test names end in /matching or /growth.
+//
+// Fixed seeds: a failure prints the case's parameters (generator, size, relabellings, seed face,
+// constraints, source/target) so it can be rebuilt exactly. A crash cannot print them, so
+// SINGLESTRIP_TRACE_CASES=1 prints every random case to stderr before running it, and
+// SINGLESTRIP_ONLY_CASE=N runs case N alone (the earlier cases are still drawn, not run).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <map>
+#include <numeric>
+#include <random>
+#include <set>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "singlestrip/errors.hpp"
+#include "singlestrip/generators.hpp"
+#include "singlestrip/strip.hpp"
+#include "strip_check.hpp"
+
+using namespace singlestrip;
+using singlestrip::testing::describe;
+using singlestrip::testing::strip_and_verify;
+using EdgeList = std::vector<std::pair<uint32_t, uint32_t>>;
+
+namespace {
+
+// Sanitizer builds run the same cases on smaller meshes (the ASan+UBSan run is ~3x slower).
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kSanitized = true;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(undefined_behavior_sanitizer)
+constexpr bool kSanitized = true;
+#else
+constexpr bool kSanitized = false;
+#endif
+#else
+constexpr bool kSanitized = false;
+#endif
+
+constexpr int kRandomCases = 2000;
+constexpr uint64_t kRandomSeed = 20261202;
+
+// ---- independent helpers (no builder code) ----
+
+std::pair<uint32_t, uint32_t> undirected(uint32_t a, uint32_t b) {
+    return {std::min(a, b), std::max(a, b)};
+}
+
+/// Face counts of the pieces left when the faces may not cross `cuts`, largest first.
+std::vector<size_t> piece_sizes(const TriangleSoup& soup, const EdgeList& cuts) {
+    std::set<std::pair<uint32_t, uint32_t>> cut;
+    for (auto [a, b] : cuts) cut.insert(undirected(a, b));
+    std::vector<uint32_t> parent(soup.triangles.size());
+    std::iota(parent.begin(), parent.end(), 0u);
+    auto find = [&](uint32_t x) {
+        while (parent[x] != x) x = parent[x] = parent[parent[x]];
+        return x;
+    };
+    std::map<std::pair<uint32_t, uint32_t>, uint32_t> first_face;
+    for (uint32_t f = 0; f < soup.triangles.size(); ++f)
+        for (int k = 0; k < 3; ++k) {
+            const auto e = undirected(soup.triangles[f][k], soup.triangles[f][(k + 1) % 3]);
+            if (cut.count(e)) continue;
+            auto [it, fresh] = first_face.emplace(e, f);
+            if (!fresh) parent[find(it->second)] = find(f);
+        }
+    std::map<uint32_t, size_t> size_of_root;
+    for (uint32_t f = 0; f < soup.triangles.size(); ++f) ++size_of_root[find(f)];
+    std::vector<size_t> sizes;
+    for (const auto& [root, n] : size_of_root) sizes.push_back(n);
+    std::sort(sizes.rbegin(), sizes.rend());
+    return sizes;
+}
+
+/// Self-avoiding random walk along mesh edges, as a polyline (at least one edge).
+std::vector<uint32_t> random_walk(const std::vector<std::vector<uint32_t>>& adj, uint32_t start, size_t max_edges, std::mt19937_64& rng) {
+    std::vector<uint32_t> line{start};
+    std::set<uint32_t> seen{start};
+    for (size_t s = 0; s < max_edges; ++s) {
+        const auto& next = adj[line.back()];
+        if (next.empty()) break;
+        const uint32_t w = next[rng() % next.size()];
+        if (!seen.insert(w).second) break;
+        line.push_back(w);
+    }
+    return line;
+}
+
+std::vector<std::vector<uint32_t>> vertex_neighbours(const TriangleSoup& soup) {
+    std::vector<std::vector<uint32_t>> adj(soup.points.size());
+    for (const Triangle& t : soup.triangles)
+        for (int k = 0; k < 3; ++k) adj[t[k]].push_back(t[(k + 1) % 3]);
+    return adj;
+}
+
+/// Adds up to `count` random walks to `walls`, each kept only if the faces stay connected.
+void add_connected_walls(const TriangleSoup& soup, Polylines& walls, int count, size_t max_edges, std::mt19937_64& rng) {
+    const auto adj = vertex_neighbours(soup);
+    for (int i = 0; i < count; ++i) {
+        const Triangle& t = soup.triangles[rng() % soup.triangles.size()];
+        std::vector<uint32_t> line = random_walk(adj, t[rng() % 3], max_edges, rng);
+        if (line.size() < 2) continue;
+        walls.push_back(std::move(line));
+        if (piece_sizes(soup, polyline_edges(walls)).size() != 1) walls.pop_back();
+    }
+}
+
+/// The link of a vertex no boundary edge touches: a closed wall that cuts its star off.
+std::vector<uint32_t> link_loop(const TriangleSoup& soup, uint32_t v) {
+    std::map<uint32_t, uint32_t> next;  // around v: face (v, a, b) gives a -> b
+    for (const Triangle& t : soup.triangles)
+        for (int k = 0; k < 3; ++k)
+            if (t[k] == v) next[t[(k + 1) % 3]] = t[(k + 2) % 3];
+    std::vector<uint32_t> loop{next.begin()->first};
+    while (loop.size() <= next.size()) loop.push_back(next.at(loop.back()));
+    return loop;  // first vertex repeated at the end
+}
+
+/// Vertices whose star is a closed fan (interior vertices).
+std::vector<uint32_t> interior_vertices(const TriangleSoup& soup) {
+    std::map<std::pair<uint32_t, uint32_t>, int> directed;
+    for (const Triangle& t : soup.triangles)
+        for (int k = 0; k < 3; ++k) ++directed[{t[k], t[(k + 1) % 3]}];
+    std::vector<char> on_boundary(soup.points.size(), 0), used(soup.points.size(), 0);
+    for (const auto& [e, n] : directed) {
+        used[e.first] = 1;
+        if (!directed.count({e.second, e.first})) on_boundary[e.first] = on_boundary[e.second] = 1;
+    }
+    std::vector<uint32_t> out;
+    for (uint32_t v = 0; v < soup.points.size(); ++v)
+        if (used[v] && !on_boundary[v]) out.push_back(v);
+    return out;
+}
+
+/// Flips of flat grids can make zero-area faces no geometric check can place; a small random
+/// displacement keeps every face proper.
+void jitter(TriangleSoup& soup, uint64_t seed, double amount) {
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> d(-amount, amount);
+    for (Point3& p : soup.points)
+        for (double& x : p) x += d(rng);
+}
+
+// ---- one random case ----
+
+struct Case {
+    std::string recipe;  ///< how the mesh was made, step by step
+    TriangleSoup soup;
+    Polylines walls;
+    StripOptions options;
+    bool separating = false;  ///< the walls cut the surface apart on purpose
+};
+
+std::string polylines_text(const Polylines& lines) {
+    std::ostringstream os;
+    for (const auto& line : lines) {
+        os << "\n    ";
+        for (uint32_t v : line) os << v << ' ';
+    }
+    return os.str();
+}
+
+std::string describe_case(const Case& c, int index) {
+    std::ostringstream os;
+    os << "case " << index << " [" << engine_name(c.options.engine) << "]: " << c.recipe << "; F=" << c.soup.triangles.size()
+       << " V=" << c.soup.points.size();
+    if (c.options.seed_face) os << "; seed face " << *c.options.seed_face;
+    if (!c.options.greedy) os << "; no greedy";
+    if (c.options.source) os << "; source " << *c.options.source;
+    if (c.options.target) os << "; target " << *c.options.target;
+    if (!c.walls.empty()) os << "; constraint polylines:" << polylines_text(c.walls);
+    return os.str();
+}
+
+uint32_t between(std::mt19937_64& rng, uint32_t lo, uint32_t hi) {
+    return lo + static_cast<uint32_t>(rng() % (hi - lo + 1));
+}
+
+/// A small random mesh of a random family; `walled` when its walls come with the family (then
+/// no edge flips, which would move the walls' edges).
+TriangleSoup random_family(std::mt19937_64& rng, std::string& recipe, Polylines& walls, uint32_t scale) {
+    const uint32_t kind = between(rng, 0, 13);
+    auto named = [&](std::string name, TriangleSoup s) {
+        recipe = std::move(name);
+        return s;
+    };
+    auto sz = [&](uint32_t lo, uint32_t hi) { return between(rng, lo, lo + (hi - lo) * scale / 4); };
+    switch (kind) {
+        case 0: {
+            const uint32_t nx = sz(1, 14), ny = sz(1, 14);
+            return named("make_grid_disk(" + std::to_string(nx) + ", " + std::to_string(ny) + ")", make_grid_disk(nx, ny));
+        }
+        case 1: {
+            const uint32_t k = sz(1, 4), r = sz(1, 3);
+            return named("make_disk_with_holes(" + std::to_string(k) + ", " + std::to_string(r) + ")", make_disk_with_holes(k, r));
+        }
+        case 2: {
+            const uint32_t a = sz(3, 20), r = sz(1, 5);
+            return named("make_annulus(" + std::to_string(a) + ", " + std::to_string(r) + ")", make_annulus(a, r));
+        }
+        case 3: {
+            const uint32_t s = between(rng, 0, scale >= 4 ? 3 : 2);
+            return named("make_icosphere(" + std::to_string(s) + ")", make_icosphere(s));
+        }
+        case 4: {
+            const uint32_t lon = sz(3, 16), lat = sz(2, 10);
+            return named("make_uv_sphere(" + std::to_string(lon) + ", " + std::to_string(lat) + ")", make_uv_sphere(lon, lat));
+        }
+        case 5: {
+            const uint32_t a = sz(3, 16), b = sz(3, 9);
+            return named("make_torus(" + std::to_string(a) + ", " + std::to_string(b) + ")", make_torus(a, b));
+        }
+        case 6: {
+            const uint32_t g = between(rng, 0, 5), r = sz(1, 2);
+            return named("make_genus_surface(" + std::to_string(g) + ", " + std::to_string(r) + ")", make_genus_surface(g, r));
+        }
+        case 7: {
+            const uint32_t g = between(rng, 1, 3), h = between(rng, 1, 4), r = sz(2, 3);
+            return named("make_genus_with_holes(" + std::to_string(g) + ", " + std::to_string(h) + ", " + std::to_string(r) + ")",
+                         make_genus_with_holes(g, h, r));
+        }
+        case 8: {
+            const uint32_t k = sz(1, 60);
+            return named("make_fan(" + std::to_string(k) + ")", make_fan(k));
+        }
+        case 9: {
+            const uint32_t k = sz(1, 60);
+            return named("make_corridor(" + std::to_string(k) + ")", make_corridor(k));
+        }
+        case 10: {
+            const uint32_t k = sz(3, 80);
+            const bool capped = rng() % 2;
+            return named("make_cone(" + std::to_string(k) + (capped ? ", true)" : ", false)"), make_cone(k, capped));
+        }
+        case 11: {
+            const uint32_t nx = sz(1, 20), ny = sz(1, 4);
+            return named("make_eared_grid(" + std::to_string(nx) + ", " + std::to_string(ny) + ")", make_eared_grid(nx, ny));
+        }
+        case 12: {
+            const uint32_t h = sz(0, 5), len = sz(2, 12);
+            if (rng() % 2)
+                return named("make_hole_corridors(" + std::to_string(h) + ", " + std::to_string(len) + ")", make_hole_corridors(h, len));
+            return named("make_slit_corridors(" + std::to_string(h) + ", " + std::to_string(len) + ")", make_slit_corridors(h, len));
+        }
+        default: {
+            const uint32_t n = sz(0, 5), len = sz(2, 12);
+            const bool serpentine = rng() % 2;
+            WalledMesh m = serpentine ? make_serpentine_walls(n, len) : make_slit_walls(n, len);
+            recipe = (serpentine ? "make_serpentine_walls(" : "make_slit_walls(") + std::to_string(n) + ", " + std::to_string(len) + ")";
+            walls = std::move(m.walls);
+            return std::move(m.soup);
+        }
+    }
+}
+
+/// Random family, perturbations, relabellings, seed face, walls and endpoints.
+Case random_case(std::mt19937_64& rng, StripEngine engine, uint32_t scale) {
+    Case c;
+    c.soup = random_family(rng, c.recipe, c.walls, scale);
+    const bool walled = !c.walls.empty();
+    const uint64_t seed = rng();
+    if (!walled && rng() % 3 == 0) {
+        jitter(c.soup, seed, 0.004);
+        const size_t flips = random_edge_flips(c.soup, c.soup.triangles.size() / 3, seed);
+        c.recipe += " + jitter(0.004, " + std::to_string(seed) + ") + random_edge_flips(F/3, same seed) = " + std::to_string(flips);
+    }
+    if (!walled && rng() % 4 == 0) {  // a hole between two walls could cut the surface apart
+        const size_t holes = between(rng, 1, 3);
+        try {
+            remove_random_faces_as_holes(c.soup, holes, seed + 1);
+            c.recipe += " + remove_random_faces_as_holes(" + std::to_string(holes) + ", seed+1)";
+        } catch (const RequestError&) {
+            // too few isolated interior faces: keep the mesh as it is
+        }
+    }
+    if (rng() % 2) {
+        const std::vector<uint32_t> moved = shuffle_vertices(c.soup, seed + 2);
+        for (auto& line : c.walls)
+            for (uint32_t& v : line) v = moved[v];
+        c.recipe += " + shuffle_vertices(seed+2)";
+    }
+    if (rng() % 2) {
+        shuffle_faces(c.soup, seed + 3);
+        c.recipe += " + shuffle_faces(seed+3)";
+    }
+    const uint32_t nf = static_cast<uint32_t>(c.soup.triangles.size());
+    c.options.engine = engine;
+    c.options.greedy = rng() % 5 != 0;
+    if (rng() % 2) add_connected_walls(c.soup, c.walls, static_cast<int>(between(rng, 1, 5)), between(rng, 1, 12), rng);
+    if (rng() % 2) c.options.seed_face = static_cast<uint32_t>(rng() % nf);
+    switch (rng() % 5) {
+        case 0:
+            break;
+        case 1:
+            c.options.source = c.soup.triangles[rng() % nf][rng() % 3];
+            break;
+        case 2:
+            c.options.target = c.soup.triangles[rng() % nf][rng() % 3];
+            break;
+        case 3:
+            c.options.source = c.soup.triangles[rng() % nf][rng() % 3];
+            c.options.target = c.soup.triangles[rng() % nf][rng() % 3];
+            break;
+        default:
+            c.options.source = c.options.target = c.soup.triangles[rng() % nf][rng() % 3];
+            break;
+    }
+    // A seed face must touch the source (strip.hpp): take a corner of it as the source.
+    if (c.options.seed_face && c.options.source) c.options.source = c.soup.triangles[*c.options.seed_face][rng() % 3];
+    if (rng() % 25 == 0) {
+        const std::vector<uint32_t> inner = interior_vertices(c.soup);
+        if (!inner.empty()) {
+            c.walls.push_back(link_loop(c.soup, inner[rng() % inner.size()]));
+            // The star may be the whole surface (a cone's apex): then nothing is cut off.
+            c.separating = piece_sizes(c.soup, polyline_edges(c.walls)).size() > 1;
+            if (!c.separating) c.walls.pop_back();
+        }
+    }
+    c.options.constraint_edges = polyline_edges(c.walls);
+    return c;
+}
+
+/// The refusal must be a RequestError naming the pieces and their sizes (largest first, as
+/// strip.cpp prints them). Returns false (after reporting) when it is not.
+bool expect_refused(const Case& c, const std::string& what) {
+    const std::vector<size_t> sizes = piece_sizes(c.soup, c.options.constraint_edges);
+    std::string expected = "into " + std::to_string(sizes.size()) + " pieces (faces per piece: ";
+    for (size_t i = 0; i < sizes.size() && i < 10; ++i) expected += (i ? ", " : "") + std::to_string(sizes[i]);
+    try {
+        strip_and_verify(c.soup, c.options);
+        ADD_FAILURE() << "separating constraints accepted\n" << what;
+        return false;
+    } catch (const RequestError& e) {
+        const bool named = std::string(e.what()).find(expected) != std::string::npos;
+        EXPECT_TRUE(named) << e.what() << "\nexpected: " << expected << "\n" << what;
+        return named;
+    } catch (const std::exception& e) {
+        ADD_FAILURE() << "threw: " << e.what() << "\n" << what;
+        return false;
+    }
+}
+
+/// One verified strip of the engine asked for, with the guarantees of strip.hpp: the output is
+/// the input plus two faces per split, and splits are bounded by the input face count. Returns
+/// false (after reporting) when anything is wrong.
+bool expect_verified(const TriangleSoup& soup, const StripOptions& options, const std::string& what) {
+    try {
+        const auto c = strip_and_verify(soup, options);
+        const bool ok = c.report.ok() && c.result.stats.engine == options.engine &&
+                        c.arrays.faces.size() == soup.triangles.size() + 2 * size_t{c.result.stats.splits} &&
+                        c.result.stats.splits <= soup.triangles.size();
+        EXPECT_TRUE(c.report.ok()) << what << "\n" << describe(c);
+        EXPECT_EQ(c.result.stats.engine, options.engine) << what;
+        EXPECT_EQ(c.arrays.faces.size(), soup.triangles.size() + 2 * size_t{c.result.stats.splits}) << what;
+        EXPECT_LE(c.result.stats.splits, soup.triangles.size()) << what;
+        return ok;
+    } catch (const std::exception& e) {
+        ADD_FAILURE() << "threw: " << e.what() << "\n" << what;
+        return false;
+    }
+}
+
+class Engines : public ::testing::TestWithParam<StripEngine> {
+protected:
+    StripOptions opts() const {
+        StripOptions o;
+        o.engine = GetParam();
+        return o;
+    }
+};
+
+std::string engine_test_name(const ::testing::TestParamInfo<StripEngine>& info) {
+    return engine_name(info.param);
+}
+
+}  // namespace
+
+INSTANTIATE_TEST_SUITE_P(Both, Engines, ::testing::Values(StripEngine::Matching, StripEngine::Growth), engine_test_name);
+
+// 2000 random meshes per engine: 14 generators at random small sizes, edge flips, extra holes,
+// shuffled vertices and faces, random seed faces, constraint walls that keep the surface
+// connected (and now and then one that does not), random source/target.
+TEST_P(Engines, ThousandsOfRandomCases) {
+    // Same seed for both engines: the same meshes and options, so their failures can be compared.
+    std::mt19937_64 rng(kRandomSeed);
+    const uint32_t scale = kSanitized ? 4 : 8;
+    int verified = 0, refused = 0, failures = 0;
+    const bool trace = std::getenv("SINGLESTRIP_TRACE_CASES") != nullptr;
+    const char* only = std::getenv("SINGLESTRIP_ONLY_CASE");
+    for (int i = 0; i < kRandomCases; ++i) {
+        const Case c = random_case(rng, GetParam(), scale);
+        const std::string what = describe_case(c, i);
+        if (only && std::atoi(only) != i) continue;
+        if (trace) std::fprintf(stderr, "%s\n", what.c_str());
+        const bool ok = c.separating ? expect_refused(c, what) : expect_verified(c.soup, c.options, what);
+        (c.separating ? refused : verified) += 1;
+        if (!ok && ++failures >= 5) break;  // enough to diagnose; keep the log short
+    }
+    std::printf("[%s] %d random strips verified, %d separating wall sets refused\n", engine_name(GetParam()), verified, refused);
+    EXPECT_EQ(failures, 0);
+    if (!only) {
+        EXPECT_EQ(verified + refused, kRandomCases);
+    }
+    EXPECT_GT(refused, 20);
+}
+
+// The families on which strips are costly (issue 15), at small sizes, with their walls, alone and
+// with relabellings, seed faces and endpoints.
+TEST_P(Engines, AwkwardFamilies) {
+    const std::vector<uint32_t> sizes = kSanitized ? std::vector<uint32_t>{30, 400, 3000} : std::vector<uint32_t>{30, 400, 3000, 12000};
+    std::mt19937_64 rng(kRandomSeed + 1);
+    for (AwkwardFamily family : kAwkwardFamilies) {
+        for (uint32_t size : sizes) {
+            const WalledMesh m = make_awkward(family, size);
+            const std::string name = std::string(awkward_family_name(family)) + " at " + std::to_string(size) + " (make_awkward)";
+            StripOptions o = opts();
+            o.constraint_edges = polyline_edges(m.walls);
+            expect_verified(m.soup, o, name);
+            // Relabelled, from a random face, between two random vertices.
+            TriangleSoup s = m.soup;
+            const uint64_t seed = rng();
+            const std::vector<uint32_t> moved = shuffle_vertices(s, seed);
+            shuffle_faces(s, seed + 1);
+            for (auto& [a, b] : o.constraint_edges) a = moved[a], b = moved[b];
+            const uint32_t nf = static_cast<uint32_t>(s.triangles.size());
+            o.seed_face = static_cast<uint32_t>(rng() % nf);
+            o.source = s.triangles[*o.seed_face][0];
+            o.target = s.triangles[rng() % nf][1];
+            expect_verified(s, o,
+                            name + " + shuffle_vertices(" + std::to_string(seed) + ") + shuffle_faces(+1), seed face " +
+                                std::to_string(*o.seed_face) + ", source " + std::to_string(*o.source) + ", target " +
+                                std::to_string(*o.target));
+        }
+    }
+}
+
+// Each family's hostile shape directly: several corridors and walls at once, holes of every kind,
+// spikes on both sides, with source = target on a hole or an ear.
+TEST_P(Engines, AwkwardFamiliesByParameters) {
+    for (uint32_t n : {1u, 2u, 5u})
+        for (uint32_t len : {2u, 3u, 17u}) {
+            const std::string tag = "(" + std::to_string(n) + ", " + std::to_string(len) + ")";
+            expect_verified(make_hole_corridors(n, len), opts(), "make_hole_corridors" + tag);
+            expect_verified(make_slit_corridors(n, len), opts(), "make_slit_corridors" + tag);
+            for (const auto& [name, m] : {std::pair{"make_slit_walls", make_slit_walls(n, len)},
+                                          std::pair{"make_serpentine_walls", make_serpentine_walls(n, len)}}) {
+                StripOptions o = opts();
+                o.constraint_edges = polyline_edges(m.walls);
+                expect_verified(m.soup, o, name + tag);
+                o.source = o.target = m.walls.back().back();  // a wall's end
+                expect_verified(m.soup, o, name + tag + " source = target = " + std::to_string(*o.source));
+            }
+        }
+    for (uint32_t bx : {1u, 3u}) {
+        const TriangleSoup s = make_disk_many_holes(bx, 2);
+        expect_verified(s, opts(), "make_disk_many_holes(" + std::to_string(bx) + ", 2)");
+        StripOptions o = opts();
+        o.source = o.target = s.triangles[s.triangles.size() / 2][0];
+        expect_verified(s, o, "make_disk_many_holes(" + std::to_string(bx) + ", 2) source = target = " + std::to_string(*o.source));
+    }
+    for (uint32_t nx : {1u, 2u, 7u, 40u})
+        for (uint32_t ny : {1u, 3u}) {
+            const TriangleSoup s = make_eared_grid(nx, ny);
+            const std::string tag = "make_eared_grid(" + std::to_string(nx) + ", " + std::to_string(ny) + ")";
+            expect_verified(s, opts(), tag);
+            StripOptions o = opts();
+            o.source = static_cast<uint32_t>(s.points.size() - 1);  // the last ear's tip
+            o.target = static_cast<uint32_t>(s.points.size() - 3);  // the one before
+            expect_verified(s, o, tag + " source " + std::to_string(*o.source) + " target " + std::to_string(*o.target));
+        }
+}
+
+// One vertex of valence 10^4: open and closed cones, and an
+// open fan whose apex is on the boundary; from the apex, to the apex.
+TEST_P(Engines, HighValenceVertices) {
+    const uint32_t k = 10000;
+    for (const auto& [name, soup] : {std::pair{"make_cone(k, false)", make_cone(k, false)},
+                                     std::pair{"make_cone(k, true)", make_cone(k, true)}, std::pair{"make_fan(k)", make_fan(k)}}) {
+        const std::string what = std::string(name) + " k=" + std::to_string(k);
+        expect_verified(soup, opts(), what);
+        StripOptions o = opts();
+        o.source = 0;
+        o.target = 0;
+        expect_verified(soup, o, what + " source = target = apex");
+        o.source = 1;
+        expect_verified(soup, o, what + " source 1, target apex");
+    }
+}
