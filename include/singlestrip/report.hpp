@@ -1,10 +1,10 @@
 // singlestrip — the report of one stripped input as JSON: `strip --report`, batch mode's
 // <stem>.report.json and the Python result's "report" all come from report_json().
 //
-// Keys: input, output (when given); input_triangles, output_triangles, splits, swaps,
-// strip_indices, indices_per_triangle, extra_percent, genus, boundary_loops,
-// fundamental_triangles, deferred_regions, engine (the engine that built the strip) — when
-// there is a result; cycles, cycle_lengths, cycle_faces_total (when cycles were computed);
+// Keys: input, output (when given); engine (the engine that built the strip, or the requested
+// one for a failed run); input_triangles, output_triangles, splits, swaps, strip_indices,
+// indices_per_triangle, extra_percent, genus, boundary_loops, fundamental_triangles,
+// deferred_regions (when there is a result); cycles, cycle_lengths, cycle_faces_total (when cycles were computed);
 // options {engine, greedy, orient, constraint_edges, seed_face, source, target (the last three
 // when set)}; seconds {read, build, strip, write} (when asked); and for batch mode ok,
 // exit_code, error (when failed) and seconds (the file's total time).
