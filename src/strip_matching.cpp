@@ -418,10 +418,13 @@ bool MatchingBuilder::repair_ball(const std::vector<uint32_t>& short_faces, size
         local[f] = static_cast<uint32_t>(owner.size());
         for (int c = 0; c < want(f); ++c) owner.push_back(f);
     }
-    using Graph = boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS>;
+    // Edges kept in vectors and the graph built in one go: Boost's default edge list allocates
+    // per edge.
+    using Graph = boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS, boost::no_property, boost::no_property,
+                                        boost::no_property, boost::vecS>;
     using Vertex = boost::graph_traits<Graph>::vertex_descriptor;
     const Vertex null = boost::graph_traits<Graph>::null_vertex();
-    Graph graph(owner.size());
+    std::vector<std::pair<uint32_t, uint32_t>> edges;
     std::vector<Vertex> mate(owner.size(), null);
     auto free_copy = [&](uint32_t f) {
         for (uint32_t v = local[f]; v < local[f] + static_cast<uint32_t>(want(f)); ++v)
@@ -434,10 +437,11 @@ bool MatchingBuilder::repair_ball(const std::vector<uint32_t>& short_faces, size
             const uint32_t g = mesh_.neighbor(h);
             if (local[g] == kNone || local[g] <= local[f]) continue;
             for (int c = 0; c < want(f); ++c)
-                for (int d = 0; d < want(g); ++d) boost::add_edge(local[f] + c, local[g] + d, graph);
+                for (int d = 0; d < want(g); ++d) edges.emplace_back(local[f] + c, local[g] + d);
             const uint32_t vf = free_copy(f), vg = free_copy(g);
             if (matched_[h] && vf != kNone && vg != kNone) mate[vf] = vg, mate[vg] = vf;
         }
+    const Graph graph(edges.begin(), edges.end(), owner.size());
     boost::matching<Graph, Vertex*, boost::property_map<Graph, boost::vertex_index_t>::type, boost::edmonds_augmenting_path_finder,
                     keep_matching, boost::no_matching_verifier>(graph, mate.data(), boost::get(boost::vertex_index, graph));
     for (uint32_t f : kept)
@@ -610,7 +614,8 @@ bool MatchingBuilder::flip_alternating(uint32_t f1) {
         if (matched_[h]) m1 = h;
     if (m1 == kNone) return false;
     const uint32_t close_face = mesh_.neighbor(m1);
-    uint32_t path[2 * kMaxLoops];  // crossed edge, then matched edge, in turn
+    if (find(sid_[close_face]) == find(sid_[f1])) return false;  // cheap filter: rarely joins loops
+    uint32_t path[2 * kMaxLoops];                                // crossed edge, then matched edge, in turn
     uint32_t roots[kMaxLoops];
     uint32_t rep_p = kNone, rep_q = kNone;  // depths of the two crossed edges of a loop met twice
     auto faces_distinct = [&](uint32_t depth) {
