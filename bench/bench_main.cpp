@@ -651,6 +651,11 @@ std::string count_k(uint64_t n) {
 std::string pct(double v) {
     return fmt("%.1f%%", v);
 }
+/// Target lines compare against limits like 1.5%: one more digit so a value shown never rounds
+/// onto the limit it missed.
+std::string pct2(double v) {
+    return fmt("%.2f%%", v);
+}
 std::string pass_miss(bool pass, const std::string& by = "") {
     return pass ? "**met**" : "**missed**" + (by.empty() ? std::string() : " (" + by + ")");
 }
@@ -939,8 +944,8 @@ std::string targets(const std::vector<Row>& rows, const Settings& cfg) {
                 g.push_back(extra(row.eng[1]));
             }
         const double m = median(x);
-        o << "| median extra triangles, libcgal-demo meshes ≥ 1000 triangles (15) | " << pct(m) << " over " << x.size() << " meshes ("
-          << ename(1) << ": " << pct(median(g)) << ") | 1.5% | " << pass_miss(m <= 1.5) << " |\n";
+        o << "| median extra triangles, libcgal-demo meshes ≥ 1000 triangles (15) | " << pct2(m) << " over " << x.size() << " meshes ("
+          << ename(1) << ": " << pct2(median(g)) << ") | 1.5% | " << pass_miss(m <= 1.5) << " |\n";
     }
     for (const auto& [name, lim] : std::vector<std::pair<std::string, double>>{{"fandisk.off", 2},
                                                                                {"head.off", 2},
@@ -958,7 +963,7 @@ std::string targets(const std::vector<Row>& rows, const Settings& cfg) {
             continue;
         }
         const double x = extra(r->eng[0]);
-        o << "| extra triangles, " << name << " (15) | " << pct(x) << " (" << ename(1) << ": " << pct(extra(r->eng[1])) << ") | "
+        o << "| extra triangles, " << name << " (15) | " << pct2(x) << " (" << ename(1) << ": " << pct2(extra(r->eng[1])) << ") | "
           << fmt("%.0f%%", lim) << " | " << pass_miss(x <= lim) << " |\n";
     }
     // Awkward families: every size.
@@ -971,15 +976,15 @@ std::string targets(const std::vector<Row>& rows, const Settings& cfg) {
             if (w.second.empty() || x > w.first) w = {x, row.spec.name};
         }
         for (const auto& [fam, w] : worst)
-            o << "| extra triangles ≤ 10% on every awkward family, " << fam << " (15) | worst " << pct(w.first) << " (" << w.second
+            o << "| extra triangles ≤ 10% on every awkward family, " << fam << " (15) | worst " << pct2(w.first) << " (" << w.second
               << ") | 10% | " << pass_miss(w.first <= 10) << " |\n";
     }
     {
         const std::vector<double> x = constraint_extras(rows, 0), g = constraint_extras(rows, 1);
         if (!x.empty()) {
             const double m = median(x);
-            o << "| median extra triangles with random constraint polylines + source/target (15) | " << pct(m) << " over " << x.size()
-              << " cases (" << ename(1) << ": " << pct(median(g)) << ") | 3% | " << pass_miss(m <= 3) << " |\n";
+            o << "| median extra triangles with random constraint polylines + source/target (15) | " << pct2(m) << " over " << x.size()
+              << " cases (" << ename(1) << ": " << pct2(median(g)) << ") | 3% | " << pass_miss(m <= 3) << " |\n";
         }
     }
     // GL indices against meshoptimizer, and the gap to the swap floor.
@@ -1061,12 +1066,12 @@ std::string targets(const std::vector<Row>& rows, const Settings& cfg) {
     // Peak memory at the largest scaling size.
     for (const auto& [name, sizes] : fam) {
         const Row* big = sizes.rbegin()->second;
-        if (big->spec.kind != Kind::Scaling || big->eng[0].status != 0) continue;
+        if (big->spec.kind != Kind::Scaling || big->spec.nominal < 1000000 || big->eng[0].status != 0) continue;
         const double bpt = big->eng[0].peak_kb * 1024.0 / tris(*big);
         const bool at10m = big->spec.nominal >= 10000000;
         o << "| peak memory at " << count_k(big->spec.nominal) << ", " << name << " (15: ≤ 120 B/tri at 10M; 17: ≤ 80) | "
-          << fmt("%.0f", bpt) << " B/tri (" << fmt("%.0f", big->eng[0].peak_kb / 1024.0) << " MB)" << (at10m ? "" : ", not 10M")
-          << " | 120 / 80 B/tri | "
+          << fmt("%.0f", bpt) << " B/tri (" << fmt("%.0f", big->eng[0].peak_kb / 1024.0) << " MB)"
+          << (at10m ? "" : " (10M with --with-10m)") << " | 120 / 80 B/tri | "
           << (bpt <= 80    ? pass_miss(true)
               : bpt <= 120 ? "met 120, missed 80"
                            : pass_miss(false))

@@ -48,6 +48,7 @@ private:
     std::vector<uint8_t> pinned_;        ///< at a root: holds the virtual face
     uint32_t pins_[2] = {kNone, kNone};  ///< source face (or seed) and target face
     uint32_t num_pins_ = 0;
+    bool reversed_ = false;  ///< only a target: the walk starts there and is reversed
     StripStats stats_;
     std::optional<Mesh> pre_merge_;  ///< the mesh before the joins, kept when paths remain
     uint32_t pre_merge_splits_ = 0;
@@ -77,6 +78,8 @@ private:
     void match_patterned();
     bool augment_from(uint32_t u, std::vector<uint32_t>& stamp, uint32_t mark, size_t budget);
     void settle_leftovers();
+    void repair_short(std::vector<uint32_t>& short_faces);
+    bool split_beside(uint32_t u);
     bool repair_in_balls(std::vector<uint32_t>& short_faces, size_t ball);
     bool repair_ball(const std::vector<uint32_t>& short_faces, size_t ball);
     static constexpr size_t kBallOneByOne = 8192;
@@ -122,7 +125,7 @@ void MatchingBuilder::choose_pins() {
     }
     if (first != kNone) pins_[num_pins_++] = first;
     if (last != kNone) pins_[num_pins_++] = last;
-    if (!opt_.seed_face && !opt_.source && last != kNone) std::swap(pins_[0], pins_[1]);  // target only
+    reversed_ = first == kNone && last != kNone;  // target only: walk from it, then reverse
 }
 
 // Splits the interior edge of h; per-half-edge flags follow the two half-edges that move, the
@@ -143,12 +146,14 @@ SplitResult MatchingBuilder::split(uint32_t h) {
     quota_.resize(mesh_.num_faces(), 0);
     if (!sid_.empty()) sid_.resize(mesh_.num_faces(), sid_[sr.f_a]), sid_[sr.g_a] = sid_[sr.g_b];
     for (uint32_t i = 0; i < num_pins_; ++i) {
-        const uint32_t v = (i == 0 && (opt_.seed_face || opt_.source)) ? pin_vertex[0] : pin_vertex[1];
+        const uint32_t v = (i == 0 && !reversed_) ? pin_vertex[0] : pin_vertex[1];
         if (v == kNone) continue;
-        if (pins_[i] == sr.f_a && !face_has_vertex(mesh_, sr.f_a, v))
+        const uint32_t old = pins_[i];
+        if (old == sr.f_a && !face_has_vertex(mesh_, sr.f_a, v))
             pins_[i] = sr.f_b;
-        else if (pins_[i] == sr.g_b && !face_has_vertex(mesh_, sr.g_b, v))
+        else if (old == sr.g_b && !face_has_vertex(mesh_, sr.g_b, v))
             pins_[i] = sr.g_a;
+        if (pins_[i] != old) std::swap(vlink_[old], vlink_[pins_[i]]);  // the virtual link moves along
     }
     return sr;
 }
@@ -383,7 +388,6 @@ bool MatchingBuilder::repair_ball(const std::vector<uint32_t>& short_faces, size
     std::vector<uint32_t>& local = ball_local_;  // kNone outside the ball, on entry and exit
     std::vector<uint32_t> faces, queue;
     bool truncated = false;
-    auto want_one = [&](uint32_t f) { return static_cast<int>(degree(f)) - (2 - vlink_[f]) == 1; };
     for (uint32_t s : short_faces) {
         if (local[s] != kNone) continue;
         queue.assign(1, s);
@@ -397,13 +401,11 @@ bool MatchingBuilder::repair_ball(const std::vector<uint32_t>& short_faces, size
         faces.insert(faces.end(), queue.begin(), queue.end());
         truncated |= queue.size() >= ball;
     }
-    // Keep faces that take exactly one matched edge and whose partner is inside too.
-    std::vector<uint32_t> kept;
-    for (uint32_t f : faces)
-        if (want_one(f))
-            local[f] = 1;
-        else
-            local[f] = kNone;
+    // Keep faces that take matched edges and whose partners are all inside too. A pinned face
+    // takes two: it gets two copies, each linked to all its neighbours (b-matching to matching).
+    auto want = [&](uint32_t f) { return std::max(0, static_cast<int>(degree(f)) - (2 - vlink_[f])); };
+    std::vector<uint32_t> kept, owner;
+    for (uint32_t f : faces) local[f] = want(f) > 0 ? 0 : kNone;
     for (uint32_t f : faces) {
         if (local[f] == kNone) continue;
         bool inside = true;
@@ -412,31 +414,46 @@ bool MatchingBuilder::repair_ball(const std::vector<uint32_t>& short_faces, size
         if (inside) kept.push_back(f);
     }
     for (uint32_t f : faces) local[f] = kNone;
-    for (uint32_t i = 0; i < kept.size(); ++i) local[kept[i]] = i;
+    for (uint32_t f : kept) {
+        local[f] = static_cast<uint32_t>(owner.size());
+        for (int c = 0; c < want(f); ++c) owner.push_back(f);
+    }
     using Graph = boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS>;
     using Vertex = boost::graph_traits<Graph>::vertex_descriptor;
-    Graph graph(kept.size());
-    std::vector<Vertex> mate(kept.size(), boost::graph_traits<Graph>::null_vertex());
-    for (uint32_t i = 0; i < kept.size(); ++i)
-        for (uint32_t h = 3 * kept[i]; h < 3 * kept[i] + 3; ++h) {
+    const Vertex null = boost::graph_traits<Graph>::null_vertex();
+    Graph graph(owner.size());
+    std::vector<Vertex> mate(owner.size(), null);
+    auto free_copy = [&](uint32_t f) {
+        for (uint32_t v = local[f]; v < local[f] + static_cast<uint32_t>(want(f)); ++v)
+            if (mate[v] == null) return v;
+        return kNone;
+    };
+    for (uint32_t f : kept)
+        for (uint32_t h = 3 * f; h < 3 * f + 3; ++h) {
             if (!passable(h)) continue;
-            const uint32_t j = local[mesh_.neighbor(h)];
-            if (j == kNone || j <= i) continue;
-            boost::add_edge(i, j, graph);
-            if (matched_[h]) mate[i] = j, mate[j] = i;
+            const uint32_t g = mesh_.neighbor(h);
+            if (local[g] == kNone || local[g] <= local[f]) continue;
+            for (int c = 0; c < want(f); ++c)
+                for (int d = 0; d < want(g); ++d) boost::add_edge(local[f] + c, local[g] + d, graph);
+            const uint32_t vf = free_copy(f), vg = free_copy(g);
+            if (matched_[h] && vf != kNone && vg != kNone) mate[vf] = vg, mate[vg] = vf;
         }
     boost::matching<Graph, Vertex*, boost::property_map<Graph, boost::vertex_index_t>::type, boost::edmonds_augmenting_path_finder,
                     keep_matching, boost::no_matching_verifier>(graph, mate.data(), boost::get(boost::vertex_index, graph));
     for (uint32_t f : kept)
         for (uint32_t h = 3 * f; h < 3 * f + 3; ++h) matched_[h] = 0;
-    for (uint32_t i = 0; i < kept.size(); ++i) {
-        quota_[kept[i]] = mate[i] == boost::graph_traits<Graph>::null_vertex();
-        if (quota_[kept[i]] || mate[i] < i) continue;
-        for (uint32_t h = 3 * kept[i]; h < 3 * kept[i] + 3; ++h)
-            if (passable(h) && local[mesh_.neighbor(h)] == mate[i]) {
+    for (uint32_t v = 0; v < owner.size(); ++v) {
+        if (mate[v] == null || mate[v] < v) continue;
+        const uint32_t f = owner[v], g = owner[mate[v]];
+        for (uint32_t h = 3 * f; h < 3 * f + 3; ++h)
+            if (passable(h) && !matched_[h] && mesh_.neighbor(h) == g) {
                 set_pair(matched_, h, 1);
                 break;
             }
+    }
+    for (uint32_t f : kept) {
+        const int have = matched_[3 * f] + matched_[3 * f + 1] + matched_[3 * f + 2];
+        quota_[f] = static_cast<uint8_t>(std::max(0, want(f) - have));
     }
     for (uint32_t f : kept) local[f] = kNone;
     return truncated;
@@ -444,14 +461,12 @@ bool MatchingBuilder::repair_ball(const std::vector<uint32_t>& short_faces, size
 
 // Faces the matching left short: local augmenting searches with a growing budget; what is still
 // short drops crossed edges instead (each drop leaves a path end).
-void MatchingBuilder::settle_leftovers() {
+void MatchingBuilder::repair_short(std::vector<uint32_t>& short_faces) {
     const uint32_t nf = mesh_.num_faces();
-    std::vector<uint32_t> stamp(nf, 0), short_faces;
+    std::vector<uint32_t> stamp(nf, 0);
     aug_prev_.assign(nf, kNone);
     aug_matched_.assign(nf, kNone);
     aug_unmatched_.assign(nf, kNone);
-    for (uint32_t f = 0; f < nf; ++f)
-        if (quota_[f] > 0) short_faces.push_back(f);
     uint32_t mark = 0;
     for (size_t budget : {size_t{64}, size_t{1024}}) {
         for (uint32_t f : short_faces)
@@ -459,12 +474,63 @@ void MatchingBuilder::settle_leftovers() {
             }
         std::erase_if(short_faces, [&](uint32_t f) { return quota_[f] == 0; });
     }
-    // Edmonds on balls: each face's own, then (for a few faces only: it costs O(ball) per
-    // augmenting path) one search over the union of larger balls.
+    // Edmonds on balls: each face's own, then one search over the union of larger balls (it
+    // costs O(ball) per augmenting path).
+    // Larger balls only for few faces: many faces still short are structural (no 2-factor).
     for (size_t ball : {size_t{512}, kBallOneByOne, size_t{32768}}) {
-        if (short_faces.empty() || (ball > kBallOneByOne && short_faces.size() > 16)) break;
+        const size_t most = ball == 512 ? SIZE_MAX : ball == kBallOneByOne ? 64 : 16;
+        if (short_faces.empty() || short_faces.size() > most) break;
         if (!repair_in_balls(short_faces, ball)) break;
     }
+}
+
+// Splits an edge of short face u, towards a face with three passable edges if it can;
+// the four children get their quotas anew. The ring of four children has two sibling edges, so
+// the dual graph gains odd cycles there: a region whose faces alternate like a chessboard (grids
+// with holes) has no 2-factor when its two colours differ in number; one split beside a short
+// face lets an augmenting path through. False if u has no such edge.
+bool MatchingBuilder::split_beside(uint32_t u) {
+    uint32_t best = kNone;
+    for (uint32_t h = 3 * u; h < 3 * u + 3; ++h) {
+        if (!passable(h) || matched_[h]) continue;
+        const uint32_t g = mesh_.neighbor(h);
+        if (best == kNone || degree(g) == 3) best = h;
+    }
+    if (best == kNone) return false;
+    const SplitResult sr = split(best);
+    for (uint32_t f : {sr.f_a, sr.f_b, sr.g_a, sr.g_b}) {
+        const int have = matched_[3 * f] + matched_[3 * f + 1] + matched_[3 * f + 2];
+        quota_[f] = static_cast<uint8_t>(std::max(0, static_cast<int>(degree(f)) - (2 - vlink_[f]) - have));
+    }
+    return true;
+}
+
+void MatchingBuilder::settle_leftovers() {
+    std::vector<uint32_t> short_faces;
+    auto collect = [&] {
+        short_faces.clear();
+        for (uint32_t f = 0; f < mesh_.num_faces(); ++f)
+            if (quota_[f] > 0) short_faces.push_back(f);
+    };
+    collect();
+    repair_short(short_faces);
+    if (!short_faces.empty()) {  // the growth builder may have to finish (fallback())
+        pre_merge_ = mesh_;
+        pre_merge_splits_ = stats_.splits;
+    }
+    // Still short: the matching is maximum there; splits beside short faces, while they help.
+    for (uint32_t round = 0; round < 4 && !short_faces.empty(); ++round) {
+        const size_t before = short_faces.size();
+        bool any = false;
+        for (uint32_t u : std::vector<uint32_t>(short_faces))
+            if (quota_[u] > 0) any |= split_beside(u);
+        if (!any) break;
+        collect();
+        repair_short(short_faces);
+        stats_.parity_splits += 1;
+        if (short_faces.size() >= before) break;
+    }
+    const uint32_t nf = mesh_.num_faces();
     for (uint32_t h = 0; h < 3 * nf; ++h) used_[h] = passable(h) && !matched_[h];
     for (uint32_t f : short_faces)
         for (uint32_t k = 0; k < 3 && quota_[f] > 0; ++k)
@@ -473,6 +539,7 @@ void MatchingBuilder::settle_leftovers() {
                 --quota_[f];
             }
     stats_.unmatched = static_cast<uint32_t>(short_faces.size());
+    if (short_faces.empty()) pre_merge_.reset();  // loops only: no fallback ahead
 }
 
 // Loops and paths: components of the crossed edges, the virtual face joining the pinned faces.
@@ -710,6 +777,7 @@ StripResult MatchingBuilder::finish(std::vector<uint32_t> order) {
     if (order.size() != nf)
         throw InternalError("matching engine: strip covers " + std::to_string(order.size()) + " of " + std::to_string(nf) + " faces");
     if (num_pins_ == 2 && order.back() != pins_[1]) throw InternalError("matching engine: strip does not end at the target face");
+    if (reversed_) std::reverse(order.begin(), order.end());
     stats_.swaps = count_swaps(mesh_, order);
     stats_.output_triangles = nf;
     StripResult result;
@@ -764,10 +832,6 @@ StripResult MatchingBuilder::run() {
     set_quotas();
     match_patterned();
     settle_leftovers();
-    if (stats_.unmatched > 0) {  // paths: the growth builder may have to finish (fallback())
-        pre_merge_ = mesh_;
-        pre_merge_splits_ = stats_.splits;
-    }
     label_structures();
     reduce_loops();
     merge_all();
