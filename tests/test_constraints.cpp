@@ -313,3 +313,20 @@ TEST_P(Constraints, CyclesAreTheSurfacesWithConstraintsAndEndpoints) {
         EXPECT_EQ(cycles.cycles.size(), 2u) << "variant " << variant;
     }
 }
+
+// Either endpoint may be given alone (strip.hpp: first face on `source`, last on `target`).
+TEST_P(Endpoints, SourceAloneOrTargetAlone) {
+    for (const auto& [name, soup] : {std::pair{"grid 3x3", make_grid_disk(3, 3)}, std::pair{"torus 6x4", make_torus(6, 4)},
+                                     std::pair{"disk with holes", make_disk_with_holes(1, 2)}}) {
+        for (uint32_t v = 0; v < soup.points.size(); ++v) {
+            StripOptions s = opts();
+            s.source = v;
+            const auto from = strip_and_verify(soup, s);
+            EXPECT_TRUE(from.report.ok()) << name << " source " << v << ": " << describe(from);
+            StripOptions t = opts();
+            t.target = v;
+            const auto to = strip_and_verify(soup, t);
+            EXPECT_TRUE(to.report.ok()) << name << " target " << v << ": " << describe(to);
+        }
+    }
+}

@@ -481,8 +481,8 @@ TEST_P(Engines, AwkwardFamiliesByParameters) {
         }
 }
 
-// One vertex of valence 10^4: open and closed cones, and an
-// open fan whose apex is on the boundary; from the apex, to the apex.
+// One vertex of valence 10^4: open and closed cones, and an open fan whose apex is on the
+// boundary; from the apex, to the apex, and with the faces in random order.
 TEST_P(Engines, HighValenceVertices) {
     const uint32_t k = 10000;
     for (const auto& [name, soup] : {std::pair{"make_cone(k, false)", make_cone(k, false)},
@@ -495,5 +495,9 @@ TEST_P(Engines, HighValenceVertices) {
         expect_verified(soup, o, what + " source = target = apex");
         o.source = 1;
         expect_verified(soup, o, what + " source 1, target apex");
+        // The apex's faces scattered through the input (file order must not matter).
+        TriangleSoup shuffled = soup;
+        shuffle_faces(shuffled, 2);
+        expect_verified(shuffled, opts(), what + " + shuffle_faces(2)");
     }
 }
