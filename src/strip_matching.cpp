@@ -502,6 +502,13 @@ void MatchingBuilder::repair_short(std::vector<uint32_t>& short_faces) {
     for (size_t ball : {size_t{512}, kBallOneByOne, size_t{32768}}) {
         const size_t most = ball == 512 ? SIZE_MAX : ball == kBallOneByOne ? 64 : 16;
         if (short_faces.empty() || short_faces.size() > most) break;
+        if (ball > kBallOneByOne) {  // a long plain search first: far cheaper than Edmonds on the union
+            for (uint32_t f : short_faces)
+                while (quota_[f] > 0 && augment_from(f, stamp, ++mark, size_t{1} << 17)) {
+                }
+            std::erase_if(short_faces, [&](uint32_t f) { return quota_[f] == 0; });
+            if (short_faces.empty()) break;
+        }
         if (!repair_in_balls(short_faces, ball)) break;
     }
 }
