@@ -215,7 +215,9 @@ bool Builder::fan_connects(uint32_t n, uint32_t ha, uint32_t hb, uint32_t r) con
     const uint32_t v = mesh_.from(ha) == mesh_.to(hb) ? mesh_.from(ha) : mesh_.to(ha);
     const uint32_t b = mesh_.neighbor(hb);
     uint32_t g = mesh_.twin(ha);  // in face a, incident to v
-    for (uint32_t guard = 0; guard < 4096; ++guard) {
+    // No cap on the degree: a cap answered "not connected" around a vertex of valence > 4096 and
+    // a closed cone then failed with "fundamental triangle in a region without cycles".
+    for (uint32_t guard = 0; guard <= mesh_.num_halfedges(); ++guard) {
         const uint32_t other = mesh_.from(g) == v ? Mesh::prev(g) : Mesh::next(g);
         if (!passable(other)) return false;
         g = mesh_.twin(other);

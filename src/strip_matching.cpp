@@ -23,9 +23,6 @@ namespace singlestrip {
 
 namespace {
 
-/// The virtual face that links the pinned faces (source and target) into one loop.
-constexpr uint32_t kVirtual = kNone - 1;
-
 class MatchingBuilder {
 public:
     MatchingBuilder(Mesh mesh, const StripOptions& options) : mesh_(std::move(mesh)), opt_(options) {}
@@ -50,7 +47,8 @@ private:
     uint32_t num_pins_ = 0;
     bool reversed_ = false;  ///< only a target: the walk starts there and is reversed
     StripStats stats_;
-    std::optional<Mesh> pre_merge_;  ///< the mesh before the joins, kept when paths remain
+    std::vector<Triangle> input_faces_;  ///< the input, to rebuild it if the split budget runs out
+    std::optional<Mesh> pre_merge_;      ///< the mesh before the joins, kept when paths remain
     uint32_t pre_merge_splits_ = 0;
     // Augmenting search, per face: the outer face it was reached from and the two edges used.
     std::vector<uint32_t> aug_prev_, aug_matched_, aug_unmatched_, aug_queue_;
@@ -75,6 +73,7 @@ private:
     std::vector<uint32_t> dual_bridges() const;
     static constexpr uint32_t kMinBridgeSide = 16;
     void split_bridges();
+    bool chain_reaches_branch(uint32_t f, uint32_t from) const;
     void match_patterned();
     bool augment_from(uint32_t u, std::vector<uint32_t>& stamp, uint32_t mark, size_t budget);
     void settle_leftovers();
@@ -97,6 +96,7 @@ private:
     std::vector<uint32_t> walk() const;
     StripResult finish(std::vector<uint32_t> order);
     StripResult fallback();
+    Mesh input_mesh() const;
 };
 
 // Pinned faces: the strip starts at pins_[0] and ends at pins_[1] (either may be absent).
@@ -227,11 +227,29 @@ std::vector<uint32_t> MatchingBuilder::dual_bridges() const {
     return bridges;
 }
 
+// Walks from face f away from face `from` through faces with two passable edges; true if it
+// reaches a face with three (a branch) within a bound.
+bool MatchingBuilder::chain_reaches_branch(uint32_t f, uint32_t from) const {
+    for (uint32_t step = 0; step < 64; ++step) {
+        if (degree(f) == 3) return true;
+        if (degree(f) != 2) return false;
+        uint32_t next = kNone;
+        for (uint32_t h = 3 * f; h < 3 * f + 3; ++h)
+            if (passable(h) && mesh_.neighbor(h) != from) next = mesh_.neighbor(h);
+        if (next == kNone) return false;
+        from = f;
+        f = next;
+    }
+    return false;
+}
+
+// Bridges on a chain that joins two branching faces are split; a chain ending in an ear or a
+// boundary (a fan, a strip of faces) is a strip already and is left alone.
 void MatchingBuilder::split_bridges() {
     for (uint32_t h : dual_bridges()) {
         const uint32_t f = Mesh::face(h), g = mesh_.neighbor(h);
-        if (degree(f) < 2 || degree(g) < 2 || f == pins_[0] || f == pins_[1] || g == pins_[0] || g == pins_[1]) continue;
-        split(h);
+        if (f == pins_[0] || f == pins_[1] || g == pins_[0] || g == pins_[1]) continue;
+        if (chain_reaches_branch(f, g) && chain_reaches_branch(g, f)) split(h);
     }
 }
 
@@ -795,18 +813,32 @@ StripResult MatchingBuilder::finish(std::vector<uint32_t> order) {
 // Not one strip (paths whose ends never touch): the growth builder, which always ends in one
 // strip, finishes on the mesh as split so far.
 StripResult MatchingBuilder::fallback() {
+    // Candidates that fail (a broken precondition on a partly split mesh) are skipped; the input
+    // mesh itself comes last and is the growth builder's own case.
     auto grow = [&](Mesh mesh, uint32_t splits) {
         StripOptions o = opt_;
         o.engine = StripEngine::Growth;
         if (o.seed_face && o.source && !face_has_vertex(mesh, *o.seed_face, *o.source)) o.seed_face.reset();
-        StripResult r = build_strip_growth(std::move(mesh), o);
-        r.stats.splits += splits;
-        return r;
+        try {
+            StripResult r = build_strip_growth(std::move(mesh), o);
+            r.stats.splits += splits;
+            return r;
+        } catch (const InternalError&) {
+            return StripResult{};
+        }
     };
-    StripResult r = grow(std::move(mesh_), stats_.splits);
-    if (pre_merge_) {  // the joins' splits may not suit the growth builder: try without them too
-        StripResult alt = grow(std::move(*pre_merge_), pre_merge_splits_);
-        if (alt.stats.output_triangles < r.stats.output_triangles) r = std::move(alt);
+    auto better = [&](StripResult& r, StripResult alt) {
+        const bool ok = !alt.order.empty() && alt.stats.splits <= stats_.input_triangles;
+        if (ok && (r.order.empty() || alt.stats.output_triangles < r.stats.output_triangles)) r = std::move(alt);
+    };
+    Mesh original = input_mesh();  // before mesh_ is handed over
+    StripResult r;
+    better(r, grow(std::move(mesh_), stats_.splits));
+    if (pre_merge_) better(r, grow(std::move(*pre_merge_), pre_merge_splits_));  // without the joins' splits
+    if (r.order.empty()) {
+        StripOptions o = opt_;
+        o.engine = StripEngine::Growth;
+        r = build_strip_growth(std::move(original), o);
     }
     r.stats.input_triangles = stats_.input_triangles;
     r.stats.loops = stats_.loops;
@@ -819,10 +851,21 @@ StripResult MatchingBuilder::fallback() {
     return r;
 }
 
+// The input mesh again (input vertices keep their positions; midpoints come after them).
+Mesh MatchingBuilder::input_mesh() const {
+    TriangleSoup soup;
+    soup.points.assign(mesh_.points().begin(), mesh_.points().begin() + mesh_.num_input_vertices());
+    soup.triangles = input_faces_;
+    return Mesh::from_soup(soup);
+}
+
 StripResult MatchingBuilder::run() {
     const uint32_t nf = mesh_.num_faces();
     check_strip_request(mesh_, opt_);
     blocked_ = constraint_halfedges(mesh_, opt_);
+    input_faces_.resize(nf);
+    for (uint32_t f = 0; f < nf; ++f)
+        for (uint32_t k = 0; k < 3; ++k) input_faces_[f][k] = mesh_.corner_vertices()[3 * f + k];
     stats_.input_triangles = nf;
     stats_.boundary_loops = mesh_.num_boundary_loops();
     stats_.genus = mesh_.genus();
@@ -841,9 +884,9 @@ StripResult MatchingBuilder::run() {
     reduce_loops();
     merge_all();
     if (opt_.validate_each_split) mesh_.validate();
-    if (!single_strip_ready()) return fallback();
+    if (!single_strip_ready() || stats_.splits > stats_.input_triangles) return fallback();
     std::vector<uint32_t> order = walk();
-    if (order.size() != mesh_.num_faces()) return fallback();
+    if (order.size() != mesh_.num_faces() || (num_pins_ == 2 && order.back() != pins_[1])) return fallback();
     return finish(std::move(order));
 }
 

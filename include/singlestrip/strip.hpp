@@ -1,14 +1,19 @@
-// singlestrip — one triangle strip for an oriented 2-manifold (Gopi, "Controllable Single-Strip
-// Generation for Triangulated Surfaces", §3 and §5), with midpoint splits where one strip is
-// otherwise impossible.
+// singlestrip — one triangle strip for an oriented 2-manifold, with midpoint splits where one
+// strip is otherwise impossible. Two engines: the matching engine (default; Gopi & Eppstein,
+// "Single-Strip Triangulation of Manifolds with Arbitrary Topology", 2004, with boundaries as in
+// Diaz-Gutierrez, Eppstein & Gopi 2006) and the growth builder (Gopi, "Controllable Single-Strip
+// Generation for Triangulated Surfaces", §3 and §5).
 //
 // Contract. Given an edge-connected, consistently oriented manifold triangle mesh (any genus, any
 // number of boundary loops), build_strip() returns a mesh that covers exactly the same surface
 // (input vertices unchanged, midpoints appended) whose faces form ONE sequence in which
-// consecutive faces share an edge. How it terminates: docs/algorithm.md.
+// consecutive faces share an edge, honouring constraint edges, seed face, source and target with
+// either engine. Why it always ends in one strip: docs/algorithm.md.
 //
-// Complexity: O(F log F) for the strip plus O(F) per fundamental triangle search (at most
-// 2g + b - 1 of them); see docs/algorithm.md. Splits are bounded by the number of input faces.
+// Complexity: growth O(F log F) plus O(F) per fundamental triangle search (at most 2g + b - 1 of
+// them); matching O(F) plus local repairs (Edmonds' matching in bounded balls around faces the
+// greedy matching leaves short). Splits are bounded by the number of input faces (the matching
+// engine falls back to the growth builder on the input rather than exceed it).
 #pragma once
 
 #include <cstdint>
@@ -57,7 +62,7 @@ struct StripStats {
     uint32_t output_triangles = 0;
     uint32_t splits = 0;
     uint32_t swaps = 0;  ///< consecutive turns in the same direction
-    uint32_t fundamental_triangles = 0;
+    uint32_t fundamental_triangles = 0;  ///< growth builder only (the matching engine: 0; cycles replay the order)
     uint32_t deferred_regions = 0;  ///< islands cut off by bridges and spliced in later
     uint32_t detours = 0;           ///< islands spliced between two strip faces without a split
     long long genus = 0;
@@ -76,6 +81,8 @@ struct StripResult {
     Mesh mesh;                    ///< the split mesh (faces in construction order)
     std::vector<uint32_t> order;  ///< faces of `mesh` in strip order (a permutation of all faces)
     /// Positions in `order` of the fundamental triangles met (§3.1, seeds of §4's cycles).
+    /// Growth builder only; empty from the matching engine (compute_fundamental_cycles() then finds
+    /// them by replaying `order`, src/fundamental_replay.cpp).
     std::vector<uint32_t> fundamental_positions;
     /// Per face of `mesh`: when it was taken (0 = the seed; the two children of a split strip
     /// face share its time). Faces taken after a fundamental triangle T contain T's parallel path
