@@ -181,7 +181,8 @@ TEST(Cli, UnknownEngineIsAUsageError) {
 }
 
 TEST(Cli, RenderStripsAnInputWithTheEngine) {
-    if (cli("render --help").code != 0) GTEST_SKIP() << "render not built";
+    // `render --help` exits 0 even without the subcommand (CLI11 prints the main help): look for it.
+    if (cli("--help").out.find("render") == std::string::npos) GTEST_SKIP() << "render not built";
     Scratch s("render-engine");
     for (const char* engine : {"matching", "growth"}) {
         SCOPED_TRACE(engine);
