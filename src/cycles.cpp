@@ -243,8 +243,7 @@ std::vector<Candidate> candidates_for(const StripView& v, FaceSearch& search, ui
         }
     add(CycleSource::ShortestPath, std::move(around));
     for (auto& path : parallel) add(CycleSource::ParallelPath, std::move(path));
-    if (cand.empty())
-        throw InternalError("fundamental cycles: no path around the fundamental triangle at position " + std::to_string(p));
+    if (cand.empty()) throw InternalError("fundamental cycles: no path around the fundamental triangle at position " + std::to_string(p));
     // Shortest first, ties in candidate order. (A stable insertion sort: a handful of
     // candidates; std::stable_sort's temporary buffer trips ASan's alloc-dealloc check in
     // GCC 12's libstdc++.)
@@ -390,8 +389,7 @@ Cycles compute_fundamental_cycles(const StripResult& result) {
     // other strip order gets them by replay, and its positions serve as take times: the faces
     // after a fundamental triangle are then exactly the region it was removed from.
     const bool recorded = result.take_time.size() == nf;
-    const std::vector<uint32_t> fundamental =
-        recorded ? result.fundamental_positions : replay_fundamental_positions(mesh, result.order);
+    const std::vector<uint32_t> fundamental = recorded ? result.fundamental_positions : replay_fundamental_positions(mesh, result.order);
     for (const uint32_t p : fundamental)
         if (p >= nf) throw InternalError("fundamental cycles: fundamental position out of range");
     const StripView view{mesh, result.order, pos, recorded ? result.take_time : pos};
@@ -451,8 +449,10 @@ void write_cycles_json(const std::string& path, const Cycles& cycles) {
     for (size_t i = 0; i < cycles.lengths.size(); ++i) {
         const double l = cycles.lengths[i];
         os << (i ? ", " : "");
-        if (std::isfinite(l)) os << l;
-        else os << "null";  // JSON has no NaN/Inf
+        if (std::isfinite(l))
+            os << l;
+        else
+            os << "null";  // JSON has no NaN/Inf
     }
     os << "]}\n";
     write_text_atomic(path, os.str());
@@ -467,8 +467,7 @@ void write_cycles_obj(const std::string& path, const StripArrays& arrays, const 
     size_t next = 1;
     for (const auto& cycle : cycles.cycles) {
         for (const uint32_t f : cycle)
-            if (f >= arrays.faces.size())
-                throw OutputError("cycles OBJ '" + path + "': face " + std::to_string(f) + " out of range");
+            if (f >= arrays.faces.size()) throw OutputError("cycles OBJ '" + path + "': face " + std::to_string(f) + " out of range");
         const std::vector<Point3> pts = cycle_polyline(arrays, cycle);
         for (const Point3& q : pts) os << "v " << q[0] << ' ' << q[1] << ' ' << q[2] << '\n';
         ranges.emplace_back(next, pts.size());

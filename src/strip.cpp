@@ -36,14 +36,14 @@ private:
     // ---- per-face / per-half-edge state (resized on every split) ----
     Mesh mesh_;
     const StripOptions& opt_;
-    std::vector<uint8_t> blocked_;     ///< per half-edge: constraint edge (never crossed)
-    std::vector<uint8_t> striped_;     ///< per face: already in the strip
-    std::vector<uint32_t> region_;     ///< per face: region label of an unstriped face
-    std::vector<uint32_t> next_, prev_;///< per face: doubly linked strip
-    std::vector<uint32_t> stamp_;      ///< per face: search marks (stamp_base_ + side)
+    std::vector<uint8_t> blocked_;       ///< per half-edge: constraint edge (never crossed)
+    std::vector<uint8_t> striped_;       ///< per face: already in the strip
+    std::vector<uint32_t> region_;       ///< per face: region label of an unstriped face
+    std::vector<uint32_t> next_, prev_;  ///< per face: doubly linked strip
+    std::vector<uint32_t> stamp_;        ///< per face: search marks (stamp_base_ + side)
     uint32_t stamp_base_ = 0;
-    std::vector<uint8_t> fundamental_; ///< per face: taken as a fundamental triangle
-    std::vector<uint32_t> time_;       ///< per face: when it was taken (StripResult::take_time)
+    std::vector<uint8_t> fundamental_;  ///< per face: taken as a fundamental triangle
+    std::vector<uint32_t> time_;        ///< per face: when it was taken (StripResult::take_time)
     uint32_t clock_ = 0;
 
     // ---- regions ----
@@ -98,8 +98,8 @@ private:
     struct Classification {
         Kind kind = Kind::Safe;
         bool fundamental = false;
-        uint32_t small_side = kNone;  ///< 0: island of `a`, 1: of `b`; kNone until searched
-        uint32_t a = kNone, b = kNone;  ///< N's open neighbours other than T
+        uint32_t small_side = kNone;      ///< 0: island of `a`, 1: of `b`; kNone until searched
+        uint32_t a = kNone, b = kNone;    ///< N's open neighbours other than T
         uint32_t ha = kNone, hb = kNone;  ///< N's half-edges towards a and b
     };
     Classification classify_local(uint32_t n, uint32_t from, uint32_t r) const;
@@ -197,7 +197,10 @@ void Builder::insert_after(uint32_t cursor, uint32_t f) {
     next_[cursor] = f;
     prev_[f] = cursor;
     next_[f] = nx;
-    if (nx != kNone) prev_[nx] = f; else tail_ = f;
+    if (nx != kNone)
+        prev_[nx] = f;
+    else
+        tail_ = f;
 }
 
 void Builder::take(uint32_t cursor, uint32_t f) {
@@ -396,8 +399,7 @@ void Builder::grow(uint32_t cursor, uint32_t region, uint32_t dest) {
         const uint32_t pv = prev_[t];
         const uint32_t hin = pv == kNone ? kNone : mesh_.shared_halfedge(t, pv);
         int turn[3] = {0, 0, 0};
-        for (uint32_t i = 0; i < nc; ++i)
-            turn[i] = hin == kNone ? 0 : (hc[i] == Mesh::next(hin) ? +1 : -1);
+        for (uint32_t i = 0; i < nc; ++i) turn[i] = hin == kNone ? 0 : (hc[i] == Mesh::next(hin) ? +1 : -1);
         // Order: greedy = fewer open neighbours first (Warnsdorff), ties alternate the turn;
         // paper = keep the same turn direction as before.
         uint32_t idx[3] = {0, 1, 2};
@@ -434,8 +436,10 @@ void Builder::grow(uint32_t cursor, uint32_t region, uint32_t dest) {
             bool undecided = false;
             for (uint32_t i = 0; i < considered && chosen == kNone; ++i) {
                 if (cls[i].kind != Kind::Unknown) continue;
-                if (!resolve(cls[i], cand[idx[i]], region, budget)) undecided = true;
-                else if (cls[i].kind == Kind::Safe) chosen = i;
+                if (!resolve(cls[i], cand[idx[i]], region, budget))
+                    undecided = true;
+                else if (cls[i].kind == Kind::Safe)
+                    chosen = i;
             }
             if (!undecided) break;
         }
@@ -527,14 +531,19 @@ void Builder::absorb(uint32_t record) {
     ++region_size_[region];
     // c0 keeps the host's in-edge, c1 its out-edge; a0 is the anchor child beside c0.
     bool fa_first;
-    if (p != kNone) fa_first = mesh_.shared_halfedge(s.f_a, p) != kNone;
-    else if (n != kNone) fa_first = mesh_.shared_halfedge(s.f_a, n) == kNone;
-    else fa_first = source_ == kNone || has_vertex(s.f_a, source_);
+    if (p != kNone)
+        fa_first = mesh_.shared_halfedge(s.f_a, p) != kNone;
+    else if (n != kNone)
+        fa_first = mesh_.shared_halfedge(s.f_a, n) == kNone;
+    else
+        fa_first = source_ == kNone || has_vertex(s.f_a, source_);
     const uint32_t c0 = fa_first ? s.f_a : s.f_b, c1 = fa_first ? s.f_b : s.f_a;
     const uint32_t a0 = fa_first ? s.g_a : s.g_b, a1 = fa_first ? s.g_b : s.g_a;
     // Host slot (index f_a) becomes c0 -> c1.
-    if (fa_first) insert_after(s.f_a, s.f_b);
-    else insert_after(p, s.f_b);  // p == kNone inserts at the head
+    if (fa_first)
+        insert_after(s.f_a, s.f_b);
+    else
+        insert_after(p, s.f_b);  // p == kNone inserts at the head
     // Normally the region goes between the children: c0 -> a0 ... a1 -> c1. At the ends of the
     // strip the region may instead go first (a1 ... a0 -> c0 -> c1) or last (c0 -> c1 -> a1 ... a0)
     // so that the first face keeps the source vertex and the last face the target (§5.2).
@@ -662,8 +671,10 @@ uint32_t Builder::find_edge(uint32_t u, uint32_t v) const {
     if (u >= mesh_.num_vertices() || v >= mesh_.num_vertices()) return kNone;
     uint32_t found = kNone;
     for_each_outgoing(u, [&](uint32_t h) {
-        if (mesh_.to(h) == v) found = h;
-        else if (mesh_.from(Mesh::prev(h)) == v) found = Mesh::prev(h);
+        if (mesh_.to(h) == v)
+            found = h;
+        else if (mesh_.from(Mesh::prev(h)) == v)
+            found = Mesh::prev(h);
         return found != kNone;
     });
     return found;
@@ -674,8 +685,8 @@ void Builder::apply_constraints() {
     for (const auto& [u, v] : opt_.constraint_edges) {
         const uint32_t h = find_edge(u, v);
         if (h == kNone)
-            throw RequestError("constraint " + std::to_string(index) + ": (" + std::to_string(u) + ", " +
-                               std::to_string(v) + ") is not an edge of the mesh");
+            throw RequestError("constraint " + std::to_string(index) + ": (" + std::to_string(u) + ", " + std::to_string(v) +
+                               ") is not an edge of the mesh");
         blocked_[h] = 1;
         if (mesh_.twin(h) != kNone) blocked_[mesh_.twin(h)] = 1;
         ++index;
@@ -739,8 +750,7 @@ StripResult Builder::run() {
     const uint32_t nf = mesh_.num_faces();
     if (nf == 0) throw InputError("mesh has no faces");
     if (opt_.seed_face && *opt_.seed_face >= nf)
-        throw RequestError("seed face " + std::to_string(*opt_.seed_face) + " is out of range (mesh has " +
-                           std::to_string(nf) + " faces)");
+        throw RequestError("seed face " + std::to_string(*opt_.seed_face) + " is out of range (mesh has " + std::to_string(nf) + " faces)");
     auto check_vertex = [&](const char* what, uint32_t v) {
         if (v >= mesh_.num_input_vertices())
             throw RequestError(std::string(what) + " vertex " + std::to_string(v) + " is out of range (mesh has " +
@@ -754,8 +764,7 @@ StripResult Builder::run() {
         const uint32_t f = *opt_.seed_face;
         const auto& cv = mesh_.corner_vertices();
         if (cv[3 * f] != *opt_.source && cv[3 * f + 1] != *opt_.source && cv[3 * f + 2] != *opt_.source)
-            throw RequestError("seed face " + std::to_string(f) + " is not incident to source vertex " +
-                               std::to_string(*opt_.source));
+            throw RequestError("seed face " + std::to_string(f) + " is not incident to source vertex " + std::to_string(*opt_.source));
     }
     grow_arrays();
     apply_constraints();
@@ -767,9 +776,7 @@ StripResult Builder::run() {
 
     const uint32_t r0 = new_region(nf);
     std::fill(region_.begin(), region_.end(), r0);
-    uint32_t seed = opt_.seed_face ? *opt_.seed_face
-                          : opt_.source  ? face_at_vertex(*opt_.source, kNone)
-                                         : choose_seed();
+    uint32_t seed = opt_.seed_face ? *opt_.seed_face : opt_.source ? face_at_vertex(*opt_.source, kNone) : choose_seed();
     uint32_t dest = kNone;
     if (opt_.target) {
         dest = face_at_vertex(*opt_.target, seed);

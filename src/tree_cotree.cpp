@@ -14,13 +14,13 @@ namespace {
 
 /// Tree T (primal, boundary identified) and cotree C (dual) of a mesh; see the header.
 struct Decomposition {
-    std::vector<uint32_t> q;                 ///< vertex -> quotient vertex (boundary -> nv)
-    std::vector<uint32_t> edge_he;           ///< interior edge -> representative half-edge
-    std::vector<uint32_t> edge_of_he;        ///< half-edge -> interior edge (kNone on boundary)
-    std::vector<uint8_t> in_tree, in_cotree; ///< per interior edge
-    std::vector<uint32_t> tree_order;        ///< quotient vertices in BFS order, root first
-    std::vector<uint32_t> tree_parent_edge;  ///< per quotient vertex (kNone at the root)
-    std::vector<uint32_t> fparent, depth;    ///< cotree parent face and depth per face
+    std::vector<uint32_t> q;                  ///< vertex -> quotient vertex (boundary -> nv)
+    std::vector<uint32_t> edge_he;            ///< interior edge -> representative half-edge
+    std::vector<uint32_t> edge_of_he;         ///< half-edge -> interior edge (kNone on boundary)
+    std::vector<uint8_t> in_tree, in_cotree;  ///< per interior edge
+    std::vector<uint32_t> tree_order;         ///< quotient vertices in BFS order, root first
+    std::vector<uint32_t> tree_parent_edge;   ///< per quotient vertex (kNone at the root)
+    std::vector<uint32_t> fparent, depth;     ///< cotree parent face and depth per face
 };
 
 Decomposition decompose(const Mesh& mesh) {
@@ -125,8 +125,8 @@ Decomposition decompose(const Mesh& mesh) {
         }
     }
     if (fqueue.size() != nf)
-        throw InternalError("tree-cotree: the dual graph minus the tree is not connected (" +
-                            std::to_string(fqueue.size()) + " of " + std::to_string(nf) + " faces)");
+        throw InternalError("tree-cotree: the dual graph minus the tree is not connected (" + std::to_string(fqueue.size()) + " of " +
+                            std::to_string(nf) + " faces)");
     return d;
 }
 
@@ -177,8 +177,7 @@ std::vector<std::vector<uint32_t>> tree_cotree_generators(const Mesh& mesh, cons
         if (order.size() != nf) throw RequestError("tree-cotree: face order does not have one entry per face");
         std::fill(pos.begin(), pos.end(), kNone);
         for (uint32_t i = 0; i < nf; ++i) {
-            if (order[i] >= nf || pos[order[i]] != kNone)
-                throw RequestError("tree-cotree: face order is not a permutation of the faces");
+            if (order[i] >= nf || pos[order[i]] != kNone) throw RequestError("tree-cotree: face order is not a permutation of the faces");
             pos[order[i]] = i;
         }
     }

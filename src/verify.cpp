@@ -30,15 +30,25 @@ constexpr size_t kMaxPerCheck = 20;  // failure lines kept per check; the rest a
 
 // --- tiny vector algebra ------------------------------------------------------------------
 using V3 = std::array<double, 3>;
-V3 sub(const V3& a, const V3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+V3 sub(const V3& a, const V3& b) {
+    return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+}
 V3 crs(const V3& a, const V3& b) {
     return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
-double dot(const V3& a, const V3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-double norm(const V3& a) { return std::sqrt(dot(a, a)); }
+double dot(const V3& a, const V3& b) {
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+double norm(const V3& a) {
+    return std::sqrt(dot(a, a));
+}
 
-uint64_t key(uint32_t a, uint32_t b) { return (static_cast<uint64_t>(a) << 32) | b; }
-uint64_t ukey(uint32_t a, uint32_t b) { return a < b ? key(a, b) : key(b, a); }
+uint64_t key(uint32_t a, uint32_t b) {
+    return (static_cast<uint64_t>(a) << 32) | b;
+}
+uint64_t ukey(uint32_t a, uint32_t b) {
+    return a < b ? key(a, b) : key(b, a);
+}
 
 std::string tri_str(const Triangle& t) {
     return "(" + std::to_string(t[0]) + "," + std::to_string(t[1]) + "," + std::to_string(t[2]) + ")";
@@ -58,8 +68,7 @@ public:
     }
     void finish() {
         for (const auto& [check, n] : count_)
-            if (n > kMaxPerCheck)
-                r_.failures.push_back(check + ": " + std::to_string(n - kMaxPerCheck) + " more failures not shown");
+            if (n > kMaxPerCheck) r_.failures.push_back(check + ": " + std::to_string(n - kMaxPerCheck) + " more failures not shown");
     }
 
 private:
@@ -84,16 +93,16 @@ struct UnionFind {
 struct Adjacency {
     size_t num_points = 0;
     std::vector<Triangle> faces;
-    std::vector<bool> face_ok;       // indices in range and distinct
-    std::vector<uint32_t> twin;      // kNo on the boundary (or when the edge is broken)
+    std::vector<bool> face_ok;                 // indices in range and distinct
+    std::vector<uint32_t> twin;                // kNo on the boundary (or when the edge is broken)
     std::vector<uint32_t> out_offset, out_he;  // CSR: outgoing half-edges of each vertex, by target
-    bool manifold = true;            // no repeated directed half-edge, every vertex one fan
+    bool manifold = true;                      // no repeated directed half-edge, every vertex one fan
     std::vector<std::string> problems;
     long long referenced_vertices = 0;
     long long edges = 0;
     long long euler = 0;
     size_t boundary_loops = 0;
-    std::vector<bool> on_boundary;   // per vertex
+    std::vector<bool> on_boundary;  // per vertex
 
     uint32_t from(uint32_t h) const { return faces[h / 3][h % 3]; }
     uint32_t to(uint32_t h) const { return faces[h / 3][(h % 3 + 1) % 3]; }
@@ -129,8 +138,8 @@ Adjacency build_adjacency(size_t num_points, const std::vector<Triangle>& faces,
         const Triangle& t = faces[f];
         bool ok = t[0] < num_points && t[1] < num_points && t[2] < num_points;
         if (!ok) {
-            problem(what + " face " + std::to_string(f) + " " + tri_str(t) + ": vertex index out of range (" +
-                    std::to_string(num_points) + " vertices)");
+            problem(what + " face " + std::to_string(f) + " " + tri_str(t) + ": vertex index out of range (" + std::to_string(num_points) +
+                    " vertices)");
         } else if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) {
             problem(what + " face " + std::to_string(f) + " " + tri_str(t) + ": repeated vertex");
             ok = false;
@@ -167,12 +176,12 @@ Adjacency build_adjacency(size_t num_points, const std::vector<Triangle>& faces,
             if (it != first && a.to(*it) == a.to(*(it - 1))) {
                 const uint32_t h = *it, g = *(it - 1);
                 if (same_vertex_set(faces[h / 3], faces[g / 3]))
-                    problem(what + " faces " + std::to_string(g / 3) + " and " + std::to_string(h / 3) +
-                            " are the same triangle " + tri_str(faces[h / 3]) + " (duplicate face)");
+                    problem(what + " faces " + std::to_string(g / 3) + " and " + std::to_string(h / 3) + " are the same triangle " +
+                            tri_str(faces[h / 3]) + " (duplicate face)");
                 else
                     problem(what + " edge (" + std::to_string(a.from(h)) + "," + std::to_string(a.to(h)) +
-                            ") is traversed in the same direction by faces " + std::to_string(g / 3) + " and " +
-                            std::to_string(h / 3) + " (flipped face, or more than two faces on an edge)");
+                            ") is traversed in the same direction by faces " + std::to_string(g / 3) + " and " + std::to_string(h / 3) +
+                            " (flipped face, or more than two faces on an edge)");
             } else {
                 canonical[*it] = true;
             }
@@ -235,8 +244,8 @@ Adjacency build_adjacency(size_t num_points, const std::vector<Triangle>& faces,
                 const uint32_t h = 3 * f + i;
                 const uint32_t v = a.from(h);
                 if (uf.find(h) != uf.find(first_corner[v])) {
-                    problem(what + " vertex " + std::to_string(v) +
-                            " is non-manifold (its faces form more than one fan; seen at face " + std::to_string(f) + ")");
+                    problem(what + " vertex " + std::to_string(v) + " is non-manifold (its faces form more than one fan; seen at face " +
+                            std::to_string(f) + ")");
                     // Merge so that each extra fan is reported once.
                     uf.unite(h, first_corner[v]);
                 }
@@ -271,10 +280,10 @@ double unit_scale(double big) {
 struct ParentFrame {
     double scale = 1;
     V3 local(const V3& q) const { return {q[0] * scale, q[1] * scale, q[2] * scale}; }
-    V3 a, b, c, n;   // corners and unnormalised normal (b-a)x(c-a)
-    double n2 = 0;   // |n|^2
-    double size = 0; // longest edge
-    V3 u, v;         // endpoints of a longest edge
+    V3 a, b, c, n;    // corners and unnormalised normal (b-a)x(c-a)
+    double n2 = 0;    // |n|^2
+    double size = 0;  // longest edge
+    V3 u, v;          // endpoints of a longest edge
     /// Absolute tolerance for twice an area in this face: relative to size^2, plus the rounding
     /// of coordinate differences far from the origin.
     double area_tol = 0;
@@ -297,9 +306,12 @@ ParentFrame frame_of(const std::vector<Point3>& pts, const Triangle& t) {
     p.n2 = dot(p.n, p.n);
     const double lab = norm(sub(p.b, p.a)), lbc = norm(sub(p.c, p.b)), lca = norm(sub(p.a, p.c));
     p.size = std::max({lab, lbc, lca});
-    if (p.size == lab) p.u = p.a, p.v = p.b;
-    else if (p.size == lbc) p.u = p.b, p.v = p.c;
-    else p.u = p.c, p.v = p.a;
+    if (p.size == lab)
+        p.u = p.a, p.v = p.b;
+    else if (p.size == lbc)
+        p.u = p.b, p.v = p.c;
+    else
+        p.u = p.c, p.v = p.a;
     double m = 0;
     for (const V3* q : {&p.a, &p.b, &p.c})
         for (double x : *q) m = std::max(m, std::abs(x));
@@ -405,8 +417,8 @@ InputStars build_stars(size_t n, const std::vector<Triangle>& in_faces) {
 
 /// Best input face among candidates for point q: the one with the largest minimum barycentric
 /// coordinate among those whose plane passes within tolerance. kNo when none contains q.
-uint32_t best_container(const std::vector<Point3>& in_pts, const std::vector<Triangle>& in_faces,
-                        const std::vector<uint32_t>& cand, const V3& q) {
+uint32_t best_container(const std::vector<Point3>& in_pts, const std::vector<Triangle>& in_faces, const std::vector<uint32_t>& cand,
+                        const V3& q) {
     uint32_t best = kNo;
     double best_min = -std::numeric_limits<double>::infinity();
     for (uint32_t f : cand) {
@@ -429,8 +441,7 @@ uint32_t best_container(const std::vector<Point3>& in_pts, const std::vector<Tri
     return best;
 }
 
-std::vector<uint32_t> infer_parents(const VerifyInput& in, const Adjacency& out, const InputStars& stars,
-                                    Failures& fails) {
+std::vector<uint32_t> infer_parents(const VerifyInput& in, const Adjacency& out, const InputStars& stars, Failures& fails) {
     const size_t n = in.in_points.size();
     const size_t F = in.out_faces.size();
     std::vector<uint32_t> parent(F, kNo);
@@ -546,23 +557,24 @@ size_t z2_rank(std::vector<Bits>& rows, size_t ncols) {
     return rank;
 }
 
-void check_cycles(const VerifyInput& in, const Adjacency& out, long long expected, Failures& fails,
-                  VerifyReport& report) {
+void check_cycles(const VerifyInput& in, const Adjacency& out, long long expected, Failures& fails, VerifyReport& report) {
     const auto& cycles = *in.cycles;
     const size_t m = cycles.size();
     const size_t F = out.faces.size();
     report.cycles_checked = m;
     if (static_cast<long long>(m) != expected)
-        fails.add("cycles", "found " + std::to_string(m) + " cycles, expected 2g+h-1 = " + std::to_string(expected) +
-                                " (2g for a closed surface)");
+        fails.add("cycles",
+                  "found " + std::to_string(m) + " cycles, expected 2g+h-1 = " + std::to_string(expected) + " (2g for a closed surface)");
     // Edge ids (undirected) for interior edges.
     std::vector<uint32_t> edge_id(3 * F, kNo);
     uint32_t num_edges = 0;
     for (uint32_t h = 0; h < 3 * F; ++h) {
         if (!out.face_ok[h / 3]) continue;
         const uint32_t t = out.twin[h];
-        if (t == kNo || h < t) edge_id[h] = num_edges++;
-        else edge_id[h] = edge_id[t];
+        if (t == kNo || h < t)
+            edge_id[h] = num_edges++;
+        else
+            edge_id[h] = edge_id[t];
     }
     // Crossings: (edge, cycle) pairs.
     std::vector<std::pair<uint32_t, uint32_t>> cross;
@@ -570,8 +582,8 @@ void check_cycles(const VerifyInput& in, const Adjacency& out, long long expecte
     for (uint32_t c = 0; c < m; ++c) {
         const auto& cyc = cycles[c];
         if (cyc.size() < 2) {
-            fails.add("cycles", "cycle " + std::to_string(c) + " has " + std::to_string(cyc.size()) +
-                                    " faces; a closed chain needs at least 2");
+            fails.add("cycles",
+                      "cycle " + std::to_string(c) + " has " + std::to_string(cyc.size()) + " faces; a closed chain needs at least 2");
             closed_ok = false;
             continue;
         }
@@ -580,8 +592,7 @@ void check_cycles(const VerifyInput& in, const Adjacency& out, long long expecte
             const uint32_t f = cyc[i], g = cyc[(i + 1) % cyc.size()];
             if (f >= F || g >= F) {
                 fails.add("cycles", "cycle " + std::to_string(c) + " position " + std::to_string(f >= F ? i : (i + 1) % cyc.size()) +
-                                        ": face " + std::to_string(f >= F ? f : g) + " out of range (" +
-                                        std::to_string(F) + " faces)");
+                                        ": face " + std::to_string(f >= F ? f : g) + " out of range (" + std::to_string(F) + " faces)");
                 this_ok = false;
                 break;
             }
@@ -591,10 +602,9 @@ void check_cycles(const VerifyInput& in, const Adjacency& out, long long expecte
                 if (t != kNo && t / 3 == g) e = edge_id[3 * f + k];
             }
             if (e == kNo) {
-                fails.add("cycles", "cycle " + std::to_string(c) + ": faces " + std::to_string(f) + " and " +
-                                        std::to_string(g) + " (positions " + std::to_string(i) + ", " +
-                                        std::to_string((i + 1) % cyc.size()) + ") do not share an edge" +
-                                        (i + 1 == cyc.size() ? " (the chain is not closed)" : ""));
+                fails.add("cycles", "cycle " + std::to_string(c) + ": faces " + std::to_string(f) + " and " + std::to_string(g) +
+                                        " (positions " + std::to_string(i) + ", " + std::to_string((i + 1) % cyc.size()) +
+                                        ") do not share an edge" + (i + 1 == cyc.size() ? " (the chain is not closed)" : ""));
                 this_ok = false;
                 break;
             }
@@ -663,7 +673,8 @@ void check_cycles(const VerifyInput& in, const Adjacency& out, long long expecte
     std::vector<uint32_t> tree_parent_edge(NV + 1, kNo), order;
     std::vector<bool> seen(NV + 1, false);
     uint32_t root = kNo;
-    if (report.boundary_loops > 0) root = S;
+    if (report.boundary_loops > 0)
+        root = S;
     else
         for (uint32_t f = 0; f < F && root == kNo; ++f)
             if (out.face_ok[f]) root = out.faces[f][0];
@@ -705,9 +716,8 @@ void check_cycles(const VerifyInput& in, const Adjacency& out, long long expecte
     for (uint32_t h : interior)
         if (!in_tree[edge_id[h]] && !in_cotree[edge_id[h]]) leftovers.push_back(h);
     if (static_cast<long long>(leftovers.size()) != expected) {
-        fails.add("cycles", "tree-cotree on the output gives " + std::to_string(leftovers.size()) +
-                                " generators, expected " + std::to_string(expected) +
-                                " (output is not a connected surface of the input's topology)");
+        fails.add("cycles", "tree-cotree on the output gives " + std::to_string(leftovers.size()) + " generators, expected " +
+                                std::to_string(expected) + " (output is not a connected surface of the input's topology)");
         return;
     }
     // P(x): parity vector of tree path root->x.
@@ -736,12 +746,12 @@ void check_cycles(const VerifyInput& in, const Adjacency& out, long long expecte
         for (size_t k = 0; k < W; ++k) any[k] |= r[k];
     for (uint32_t c = 0; c < m; ++c)
         if (!(any[c / 64] >> (c % 64) & 1))
-            fails.add("cycles", "cycle " + std::to_string(c) + " is null-homologous in H1(M;Z2) (it bounds a region, e.g. a loop around one vertex)");
+            fails.add("cycles",
+                      "cycle " + std::to_string(c) + " is null-homologous in H1(M;Z2) (it bounds a region, e.g. a loop around one vertex)");
     const size_t rank = z2_rank(rows, m);
     report.cycle_rank = rank;
     if (rank < m)
-        fails.add("cycles", "the " + std::to_string(m) + " cycles are not linearly independent in H1(M;Z2): rank " +
-                                std::to_string(rank));
+        fails.add("cycles", "the " + std::to_string(m) + " cycles are not linearly independent in H1(M;Z2): rank " + std::to_string(rank));
 }
 
 }  // namespace
@@ -749,8 +759,8 @@ void check_cycles(const VerifyInput& in, const Adjacency& out, long long expecte
 std::string VerifyReport::to_string() const {
     std::ostringstream os;
     if (ok()) {
-        os << "OK: " << output_faces << " output faces (" << input_faces << " input), Euler characteristic "
-           << euler_characteristic << ", " << boundary_loops << " boundary loop(s), genus " << genus;
+        os << "OK: " << output_faces << " output faces (" << input_faces << " input), Euler characteristic " << euler_characteristic << ", "
+           << boundary_loops << " boundary loop(s), genus " << genus;
         if (cycles_checked) os << ", " << cycles_checked << " independent cycles";
         os << "\n";
     } else {
@@ -781,8 +791,8 @@ VerifyReport verify(const VerifyInput& in) {
 
     // ---- original vertices unchanged
     if (in.out_points.size() < n) {
-        fails.add("vertices", "output has " + std::to_string(in.out_points.size()) + " vertices, fewer than the input's " +
-                                  std::to_string(n));
+        fails.add("vertices",
+                  "output has " + std::to_string(in.out_points.size()) + " vertices, fewer than the input's " + std::to_string(n));
     }
     for (size_t v = 0; v < std::min(n, in.out_points.size()); ++v)
         if (!(in.out_points[v] == in.in_points[v]))
@@ -811,25 +821,24 @@ VerifyReport verify(const VerifyInput& in) {
     }
     bool all_faces_ok = std::all_of(out.face_ok.begin(), out.face_ok.end(), [](bool b) { return b; });
     if (out.euler != inp.euler)
-        fails.add("topology", "Euler characteristic " + std::to_string(out.euler) + " differs from the input's " +
-                                  std::to_string(inp.euler));
+        fails.add("topology",
+                  "Euler characteristic " + std::to_string(out.euler) + " differs from the input's " + std::to_string(inp.euler));
     if (out.boundary_loops != inp.boundary_loops)
-        fails.add("topology", std::to_string(out.boundary_loops) + " boundary loop(s), the input has " +
-                                  std::to_string(inp.boundary_loops));
+        fails.add("topology",
+                  std::to_string(out.boundary_loops) + " boundary loop(s), the input has " + std::to_string(inp.boundary_loops));
 
     // ---- parents
     std::vector<uint32_t> parent;
     if (!in.out_parent.empty()) {
         parent = in.out_parent;
         if (parent.size() != F) {
-            fails.add("parent", "parent array has " + std::to_string(parent.size()) + " entries for " +
-                                    std::to_string(F) + " faces");
+            fails.add("parent", "parent array has " + std::to_string(parent.size()) + " entries for " + std::to_string(F) + " faces");
             parent.resize(F, kNo);
         }
         for (size_t f = 0; f < F; ++f)
             if (parent[f] != kNo && parent[f] >= in.in_faces.size()) {
-                fails.add("parent", "face " + std::to_string(f) + ": parent " + std::to_string(parent[f]) +
-                                        " out of range (" + std::to_string(in.in_faces.size()) + " input faces)");
+                fails.add("parent", "face " + std::to_string(f) + ": parent " + std::to_string(parent[f]) + " out of range (" +
+                                        std::to_string(in.in_faces.size()) + " input faces)");
                 parent[f] = kNo;
             }
     } else {
@@ -859,7 +868,8 @@ VerifyReport verify(const VerifyInput& in) {
             bool within = true;
             for (const V3& q : {wa, wb, wc}) within = within && sliver_contains(P, q);
             const double nd = norm(crs(sub(b, a), sub(c, a)));
-            if (!within) fails.add("geometry", who + ": not within its (nearly) degenerate parent");
+            if (!within)
+                fails.add("geometry", who + ": not within its (nearly) degenerate parent");
             else if (!(nd <= std::sqrt(P.n2) + P.area_tol))
                 fails.add("geometry", who + ": larger than its (nearly) degenerate parent");
             child_area[parent[f]] += 0.5 * nd;
@@ -872,18 +882,23 @@ VerifyReport verify(const VerifyInput& in) {
             if (!(dist <= kRelTol * P.size)) in_plane = false;
             if (!(std::min({l[0], l[1], l[2]}) >= -kRelTol)) inside = false;
         }
-        if (!in_plane) fails.add("geometry", who + ": not in its parent's plane");
-        else if (!inside) fails.add("geometry", who + ": not inside its parent");
+        if (!in_plane)
+            fails.add("geometry", who + ": not in its parent's plane");
+        else if (!inside)
+            fails.add("geometry", who + ": not inside its parent");
         const V3 nf = crs(sub(b, a), sub(c, a));
         const double nP = std::sqrt(P.n2);
         const double projected = nP > 0 ? dot(nf, P.n) / nP : 0.0;  // twice the signed area in the parent's plane
-        if (!(norm(nf) > 1e-15 * nP)) fails.add("geometry", who + ": degenerate (zero area)");
-        else if (!(projected > 0)) fails.add("orientation", who + ": orientation opposite to its parent's (flipped)");
+        if (!(norm(nf) > 1e-15 * nP))
+            fails.add("geometry", who + ": degenerate (zero area)");
+        else if (!(projected > 0))
+            fails.add("orientation", who + ": orientation opposite to its parent's (flipped)");
         child_area[parent[f]] += 0.5 * projected;
     }
     if (degenerate_parents_checked)
-        report.notes.push_back(std::to_string(degenerate_parents_checked) +
-                               " face(s) lie in zero-area or nearly degenerate input faces: checked to stay within them, orientation not checked");
+        report.notes.push_back(
+            std::to_string(degenerate_parents_checked) +
+            " face(s) lie in zero-area or nearly degenerate input faces: checked to stay within them, orientation not checked");
     if (all_faces_ok && std::all_of(parent.begin(), parent.end(), [](uint32_t p) { return p != kNo; })) {
         for (uint32_t p = 0; p < in.in_faces.size(); ++p) {
             const ParentFrame P = frame_of(in.in_points, in.in_faces[p]);
@@ -939,15 +954,14 @@ VerifyReport verify(const VerifyInput& in) {
                 }
             }
             if (found == kNo) {
-                fails.add("conformity", "edge (" + std::to_string(a) + "," + std::to_string(b) + ") of face " +
-                                            std::to_string(f) + " has only one face but is not on the input's boundary (T-junction or hole)");
+                fails.add("conformity", "edge (" + std::to_string(a) + "," + std::to_string(b) + ") of face " + std::to_string(f) +
+                                            " has only one face but is not on the input's boundary (T-junction or hole)");
                 continue;
             }
             pieces.push_back({found, ta, a, b, f});
         }
-        std::sort(pieces.begin(), pieces.end(), [](const Piece& x, const Piece& y) {
-            return x.input_he != y.input_he ? x.input_he < y.input_he : x.t < y.t;
-        });
+        std::sort(pieces.begin(), pieces.end(),
+                  [](const Piece& x, const Piece& y) { return x.input_he != y.input_he ? x.input_he < y.input_he : x.t < y.t; });
         std::vector<bool> covered(3 * in.in_faces.size(), false);
         for (size_t i = 0; i < pieces.size();) {
             size_t j = i;
@@ -966,9 +980,12 @@ VerifyReport verify(const VerifyInput& in) {
                 uint32_t cur = inp.from(ih);
                 size_t steps = 0;
                 for (; steps < j - i; ++steps) {
-                    auto it = std::lower_bound(pieces.begin() + static_cast<std::ptrdiff_t>(i), pieces.begin() + static_cast<std::ptrdiff_t>(j), cur,
-                                               [](const Piece& x, uint32_t v) { return x.a < v; });
-                    while (it != pieces.begin() + static_cast<std::ptrdiff_t>(j) && it->a == cur && used[static_cast<size_t>(it - pieces.begin()) - i]) ++it;
+                    auto it =
+                        std::lower_bound(pieces.begin() + static_cast<std::ptrdiff_t>(i), pieces.begin() + static_cast<std::ptrdiff_t>(j),
+                                         cur, [](const Piece& x, uint32_t v) { return x.a < v; });
+                    while (it != pieces.begin() + static_cast<std::ptrdiff_t>(j) && it->a == cur &&
+                           used[static_cast<size_t>(it - pieces.begin()) - i])
+                        ++it;
                     if (it == pieces.begin() + static_cast<std::ptrdiff_t>(j) || it->a != cur) break;
                     used[static_cast<size_t>(it - pieces.begin()) - i] = true;
                     cur = it->b;
@@ -976,15 +993,15 @@ VerifyReport verify(const VerifyInput& in) {
                 ok = steps == j - i && cur == inp.to(ih);
             }
             if (!ok)
-                fails.add("conformity", "input boundary edge (" + std::to_string(inp.from(ih)) + "," +
-                                            std::to_string(inp.to(ih)) + ") is not tiled exactly by output boundary edges (T-junction, gap or overlap; near face " +
+                fails.add("conformity", "input boundary edge (" + std::to_string(inp.from(ih)) + "," + std::to_string(inp.to(ih)) +
+                                            ") is not tiled exactly by output boundary edges (T-junction, gap or overlap; near face " +
                                             std::to_string(pieces[i].face) + ")");
             i = j;
         }
         for (uint32_t ih = 0; ih < 3 * in.in_faces.size(); ++ih)
             if (inp.twin[ih] == kNo && !covered[ih])
-                fails.add("conformity", "input boundary edge (" + std::to_string(inp.from(ih)) + "," +
-                                            std::to_string(inp.to(ih)) + ") is not covered by output boundary edges");
+                fails.add("conformity", "input boundary edge (" + std::to_string(inp.from(ih)) + "," + std::to_string(inp.to(ih)) +
+                                            ") is not covered by output boundary edges");
     }
 
     // ---- strip: consecutive faces share an edge
@@ -993,8 +1010,8 @@ VerifyReport verify(const VerifyInput& in) {
         std::array<uint32_t, 3> common{};
         const uint32_t k = common_vertices(in.out_faces[f], in.out_faces[f + 1], common);
         if (k != 2)
-            fails.add("strip", "faces " + std::to_string(f) + " and " + std::to_string(f + 1) + " share " +
-                                   std::to_string(k) + " vertices, not an edge");
+            fails.add("strip", "faces " + std::to_string(f) + " and " + std::to_string(f + 1) + " share " + std::to_string(k) +
+                                   " vertices, not an edge");
     }
 
     // ---- index sequence
@@ -1010,14 +1027,14 @@ VerifyReport verify(const VerifyInput& in) {
         if (range_ok) {
             const auto dec = gl_decode(s);
             if (dec.size() != F)
-                fails.add("indices", "index sequence decodes to " + std::to_string(dec.size()) + " triangles, the output has " +
-                                         std::to_string(F));
+                fails.add("indices",
+                          "index sequence decodes to " + std::to_string(dec.size()) + " triangles, the output has " + std::to_string(F));
             for (size_t f = 0; f < std::min(dec.size(), F); ++f)
                 if (!same_cyclic(dec[f], in.out_faces[f])) {
                     const bool flipped = same_cyclic({dec[f][1], dec[f][0], dec[f][2]}, in.out_faces[f]);
                     fails.add("indices", "decoded triangle " + std::to_string(f) + " " + tri_str(dec[f]) +
-                                             (flipped ? " has the opposite winding of face " : " differs from face ") +
-                                             std::to_string(f) + " " + tri_str(in.out_faces[f]));
+                                             (flipped ? " has the opposite winding of face " : " differs from face ") + std::to_string(f) +
+                                             " " + tri_str(in.out_faces[f]));
                 }
         }
     }
@@ -1037,8 +1054,7 @@ VerifyReport verify(const VerifyInput& in) {
                 continue;
             }
             cset.insert(ukey(a, b));
-            if (!out.has_edge(a, b))
-                fails.add("constraints", who + ": constraint edge was split (it is not an edge of the output)");
+            if (!out.has_edge(a, b)) fails.add("constraints", who + ": constraint edge was split (it is not an edge of the output)");
         }
         auto constraint_edges_of = [&](uint32_t P, std::vector<std::pair<uint32_t, uint32_t>>& es) {
             const Triangle& t = in.in_faces[P];
@@ -1059,8 +1075,8 @@ VerifyReport verify(const VerifyInput& in) {
                     double t = 0;
                     if (on_segment(in.in_points[u], in.in_points[v], in.out_points[p], &t) && t > kRelTol && t < 1 - kRelTol)
                         fails.add("constraints", "vertex " + std::to_string(p) + " (face " + std::to_string(f) +
-                                                     ") lies inside constraint edge (" + std::to_string(u) + "," +
-                                                     std::to_string(v) + "): the constraint was split");
+                                                     ") lies inside constraint edge (" + std::to_string(u) + "," + std::to_string(v) +
+                                                     "): the constraint was split");
                 }
         }
         // Consecutive faces never share (a piece of) a constraint edge.
@@ -1075,9 +1091,8 @@ VerifyReport verify(const VerifyInput& in) {
                 const V3 U = in.in_points[u], Vv = in.in_points[v];
                 if (on_segment(U, Vv, in.out_points[common[0]]) && on_segment(U, Vv, in.out_points[common[1]])) {
                     fails.add("constraints", "faces " + std::to_string(f) + " and " + std::to_string(f + 1) + " share edge (" +
-                                                 std::to_string(common[0]) + "," + std::to_string(common[1]) +
-                                                 ") on constraint edge (" + std::to_string(u) + "," + std::to_string(v) +
-                                                 "): the strip crosses a constraint");
+                                                 std::to_string(common[0]) + "," + std::to_string(common[1]) + ") on constraint edge (" +
+                                                 std::to_string(u) + "," + std::to_string(v) + "): the strip crosses a constraint");
                     break;
                 }
             }
@@ -1090,13 +1105,15 @@ VerifyReport verify(const VerifyInput& in) {
         return t[0] == v || t[1] == v || t[2] == v;
     };
     if (in.source) {
-        if (*in.source >= n) fails.add("source", "source vertex " + std::to_string(*in.source) + " is not an input vertex");
+        if (*in.source >= n)
+            fails.add("source", "source vertex " + std::to_string(*in.source) + " is not an input vertex");
         else if (!has_vertex(0, *in.source))
-            fails.add("source", "first face 0 " + tri_str(in.out_faces[0]) + " does not contain source vertex " +
-                                    std::to_string(*in.source));
+            fails.add("source",
+                      "first face 0 " + tri_str(in.out_faces[0]) + " does not contain source vertex " + std::to_string(*in.source));
     }
     if (in.target) {
-        if (*in.target >= n) fails.add("target", "target vertex " + std::to_string(*in.target) + " is not an input vertex");
+        if (*in.target >= n)
+            fails.add("target", "target vertex " + std::to_string(*in.target) + " is not an input vertex");
         else if (!has_vertex(static_cast<uint32_t>(F - 1), *in.target))
             fails.add("target", "last face " + std::to_string(F - 1) + " " + tri_str(in.out_faces[F - 1]) +
                                     " does not contain target vertex " + std::to_string(*in.target));
@@ -1137,8 +1154,7 @@ VerifyReport verify_files(TriangleSoup input, const std::string& out_path, const
         vi.out_parent = std::move(om.parent);
     }
     if (options.indices_path) vi.indices = read_index_file(*options.indices_path);
-    if (options.constraints_path)
-        vi.constraints = read_constraints(*options.constraints_path, static_cast<uint32_t>(vi.in_points.size()));
+    if (options.constraints_path) vi.constraints = read_constraints(*options.constraints_path, static_cast<uint32_t>(vi.in_points.size()));
     vi.source = options.source;
     vi.target = options.target;
     if (options.cycles_path) vi.cycles = read_cycles_file(*options.cycles_path);

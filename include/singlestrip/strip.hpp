@@ -61,10 +61,10 @@ struct StripStats {
     uint32_t input_triangles = 0;
     uint32_t output_triangles = 0;
     uint32_t splits = 0;
-    uint32_t swaps = 0;  ///< consecutive turns in the same direction
+    uint32_t swaps = 0;                  ///< consecutive turns in the same direction
     uint32_t fundamental_triangles = 0;  ///< growth builder only (the matching engine: 0; cycles replay the order)
-    uint32_t deferred_regions = 0;  ///< islands cut off by bridges and spliced in later
-    uint32_t detours = 0;           ///< islands spliced between two strip faces without a split
+    uint32_t deferred_regions = 0;       ///< islands cut off by bridges and spliced in later
+    uint32_t detours = 0;                ///< islands spliced between two strip faces without a split
     long long genus = 0;
     uint32_t boundary_loops = 0;
     StripEngine engine = StripEngine::Matching;  ///< the engine that built the strip

@@ -29,8 +29,7 @@ namespace singlestrip {
 /// identity (mesh face indices).
 /// \pre mesh is valid and edge-connected. \throw RequestError if it is not edge-connected or
 ///      `order` is not a permutation of its faces; InternalError on a broken invariant.
-std::vector<std::vector<uint32_t>> tree_cotree_generators(const Mesh& mesh,
-                                                          const std::vector<uint32_t>& order = {});
+std::vector<std::vector<uint32_t>> tree_cotree_generators(const Mesh& mesh, const std::vector<uint32_t>& order = {});
 
 /// Homology classes in H1(M; Z2) of closed face chains, by intersection parity with the
 /// relative cycles (leftover edge + T paths) of the tree–cotree above: two chains are homologous
@@ -59,13 +58,13 @@ private:
     const Mesh* mesh_;
     std::vector<uint32_t> fparent_, depth_;  ///< cotree parent face and depth per face
     std::vector<uint32_t> leftover_he_;      ///< leftover edge -> representative half-edge
-    std::vector<uint32_t> edge_of_he_;    ///< half-edge -> interior edge id (kNone on boundary)
-    std::vector<uint32_t> leftover_;      ///< leftover edge ids (one per class bit)
-    std::vector<uint32_t> bit_of_edge_;   ///< interior edge -> its class bit if leftover, else kNone
+    std::vector<uint32_t> edge_of_he_;       ///< half-edge -> interior edge id (kNone on boundary)
+    std::vector<uint32_t> leftover_;         ///< leftover edge ids (one per class bit)
+    std::vector<uint32_t> bit_of_edge_;      ///< interior edge -> its class bit if leftover, else kNone
     /// Interior edge -> preorder interval [first, last) of the leftover endpoints (indices into
     /// end_bit_) in the subtree below it, if it is a tree edge; else first == last.
     std::vector<uint32_t> under_first_, under_last_;
-    std::vector<uint32_t> end_bit_;       ///< leftover endpoints in preorder of their vertex: class bit
+    std::vector<uint32_t> end_bit_;  ///< leftover endpoints in preorder of their vertex: class bit
 };
 
 /// Rank over Z2 of bit-vector rows (all of the same length). O(rows^2 * words).

@@ -61,9 +61,9 @@ struct VerifyInput {
     std::vector<Point3> in_points;
     std::vector<Triangle> in_faces;
     std::vector<Point3> out_points;
-    std::vector<Triangle> out_faces;                 ///< in strip order
-    std::vector<uint32_t> out_parent;                ///< parent input face per output face; empty = infer
-    std::optional<std::vector<uint32_t>> indices;    ///< GL_TRIANGLE_STRIP indices
+    std::vector<Triangle> out_faces;               ///< in strip order
+    std::vector<uint32_t> out_parent;              ///< parent input face per output face; empty = infer
+    std::optional<std::vector<uint32_t>> indices;  ///< GL_TRIANGLE_STRIP indices
     std::vector<std::pair<uint32_t, uint32_t>> constraints;
     std::optional<uint32_t> source;
     std::optional<uint32_t> target;
@@ -76,12 +76,12 @@ struct VerifyReport {
     size_t faces_checked = 0;           ///< output faces examined
     size_t input_faces = 0;
     size_t output_faces = 0;
-    size_t output_vertices = 0;         ///< referenced output vertices
-    long long euler_characteristic = 0; ///< of the output (referenced vertices)
-    size_t boundary_loops = 0;          ///< of the output
-    long long genus = 0;                ///< of the output, from Euler characteristic and loops
+    size_t output_vertices = 0;          ///< referenced output vertices
+    long long euler_characteristic = 0;  ///< of the output (referenced vertices)
+    size_t boundary_loops = 0;           ///< of the output
+    long long genus = 0;                 ///< of the output, from Euler characteristic and loops
     size_t cycles_checked = 0;
-    size_t cycle_rank = 0;              ///< Z2 rank of the cycles (when computed)
+    size_t cycle_rank = 0;  ///< Z2 rank of the cycles (when computed)
     [[nodiscard]] bool ok() const noexcept { return failures.empty(); }
     /// Human-readable multi-line summary: "OK ..." or the failures.
     [[nodiscard]] std::string to_string() const;
@@ -98,8 +98,8 @@ struct VerifyFileOptions {
     std::optional<std::string> constraints_path;  ///< polylines, as for `strip --constraints`
     std::optional<uint32_t> source;
     std::optional<uint32_t> target;
-    std::optional<std::string> cycles_path;       ///< JSON {"cycles": [[face, ...], ...]}
-    std::string input_format;                     ///< ReadOptions::format for the input mesh
+    std::optional<std::string> cycles_path;  ///< JSON {"cycles": [[face, ...], ...]}
+    std::string input_format;                ///< ReadOptions::format for the input mesh
 };
 
 /// Reads the input mesh (read_mesh_file), the output mesh (read_output_mesh) and the optional
@@ -107,8 +107,7 @@ struct VerifyFileOptions {
 /// they are inferred geometrically.
 /// \throw InputError (naming the file) when a file is missing, unreadable or malformed; the
 ///        verification results themselves are never thrown, they are in the report.
-VerifyReport verify_files(const std::string& in_path, const std::string& out_path,
-                          const VerifyFileOptions& options = {});
+VerifyReport verify_files(const std::string& in_path, const std::string& out_path, const VerifyFileOptions& options = {});
 
 /// The same with the input mesh already read (e.g. a built-in model); options.input_format is
 /// not used.
