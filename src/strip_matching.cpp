@@ -11,10 +11,12 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <initializer_list>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "path_order.hpp"
 #include "singlestrip/errors.hpp"
 #include "singlestrip/strip.hpp"
 #include "strip_controls.hpp"
@@ -86,6 +88,10 @@ private:
     void label_structures();
     void merge_all();
     void reduce_loops();
+    void absorb_loops();
+    std::vector<uint32_t> loop_from(uint32_t cut) const;
+    int swap_at(uint32_t h) const;
+    int swaps_around(std::initializer_list<uint32_t> faces) const;
     bool flip_alternating(uint32_t f1);
     bool meets_first(uint32_t from, uint32_t back, uint32_t good, uint32_t bad) const;
     bool try_merge(uint32_t h, bool allow_split);
@@ -704,6 +710,169 @@ void MatchingBuilder::reduce_loops() {
     }
 }
 
+// The faces of a loop cut open at its crossed half-edge `cut`: from cut's face round to the face
+// across it.
+std::vector<uint32_t> MatchingBuilder::loop_from(uint32_t cut) const {
+    std::vector<uint32_t> seq;
+    uint32_t in = cut, f = Mesh::face(cut);
+    for (;;) {
+        seq.push_back(f);
+        uint32_t out = kNone;
+        for (uint32_t h = 3 * f; h < 3 * f + 3; ++h)
+            if (used_[h] && h != in) out = h;
+        if (out == kNone || out == mesh_.twin(cut)) return seq;
+        in = mesh_.twin(out);
+        f = Mesh::face(in);
+    }
+}
+
+// 1 if the GL strip needs a swap at crossed half-edge h: the turns in its two faces (the faces'
+// edges left uncrossed) pivot on the same endpoint of h. Path ends make no turn.
+int MatchingBuilder::swap_at(uint32_t h) const {
+    const uint32_t t = mesh_.twin(h);
+    const uint32_t f = Mesh::face(h), g = Mesh::face(t);
+    if (hdeg(f) != 2 || hdeg(g) != 2) return 0;
+    const bool f_at_from = !used_[Mesh::prev(h)];  // f's uncrossed edge touches from(h)
+    const bool g_at_from = !used_[Mesh::next(t)];  // g's uncrossed edge touches to(t) = from(h)
+    return f_at_from == g_at_from;
+}
+
+// Swaps at the crossed edges of the given faces (each edge counted once).
+int MatchingBuilder::swaps_around(std::initializer_list<uint32_t> faces) const {
+    uint32_t seen[9];
+    uint32_t n = 0;
+    int sum = 0;
+    for (uint32_t f : faces)
+        for (uint32_t h = 3 * f; h < 3 * f + 3; ++h) {
+            if (!used_[h]) continue;
+            const uint32_t key = std::min(h, mesh_.twin(h));
+            if (std::find(seen, seen + n, key) != seen + n) continue;
+            seen[n++] = key;
+            sum += swap_at(h);
+        }
+    return sum;
+}
+
+// Loops taken into one growing path for free, before any split (rotation-extension, Pósa 1976):
+// a path end next to a loop opens the loop there and continues round it; a path end next to a
+// face x inside the path links to x and drops x's link towards the end, so the part between turns
+// round and x's old neighbour becomes the end. Rotations are searched at random from the ends and
+// kept only when they lead to a loop taken in for fewer GL indices than its split would cost
+// (a split: 2 triangles; each changed turn pattern may add a swap). Only loops (no pins, no other
+// paths) are handled; what is left is joined by merge_all().
+void MatchingBuilder::absorb_loops() {
+    const uint32_t nf = mesh_.num_faces();
+    if (num_pins_ > 0 || nf < 2) return;
+    uint32_t loops = 0;
+    for (uint32_t s = 0; s < uf_.size(); ++s)
+        if (find(s) == s) {
+            if (!cycle_[s] || pinned_[s]) return;
+            ++loops;
+        }
+    if (loops < 2) return;
+    uint32_t cut = kNone;
+    for (uint32_t h = 0; h < 3 * nf && cut == kNone; ++h)
+        if (used_[h]) cut = h;
+    const uint32_t root = find(sid_[Mesh::face(cut)]);
+    PathOrder path(nf);
+    path.append(loop_from(cut));
+    set_pair(used_, cut, 0);
+    cycle_[root] = 0;
+    uint32_t ends[2] = {Mesh::face(cut), mesh_.neighbor(cut)};  // front, back
+    struct Take {
+        uint32_t link = kNone, cut = kNone;
+        int cost = 0;
+    };
+    // The cheapest way to take a loop in at ends[side]: link h into face g, cut one of g's links.
+    auto best_take = [&](uint32_t side) {
+        Take best;
+        const uint32_t e = ends[side];
+        for (uint32_t h = 3 * e; h < 3 * e + 3; ++h) {
+            if (!passable(h) || used_[h]) continue;
+            const uint32_t g = mesh_.neighbor(h), r = find(sid_[g]);
+            if (r == root || !cycle_[r] || pinned_[r]) continue;
+            for (uint32_t gc = 3 * g; gc < 3 * g + 3; ++gc) {
+                if (!used_[gc]) continue;
+                const uint32_t c = mesh_.neighbor(gc);
+                const int before = swaps_around({e, g, c});
+                set_pair(used_, gc, 0), set_pair(used_, h, 1);
+                const int cost = swaps_around({e, g, c}) - before;
+                set_pair(used_, gc, 1), set_pair(used_, h, 0);
+                if (best.link == kNone || cost < best.cost) best = {h, gc, cost};
+            }
+        }
+        return best;
+    };
+    auto take = [&](uint32_t side, const Take& t) {
+        std::vector<uint32_t> seq = loop_from(t.cut);
+        uf_[find(sid_[Mesh::face(t.cut)])] = root;
+        set_pair(used_, t.cut, 0);
+        set_pair(used_, t.link, 1);
+        side ? path.append(seq) : path.prepend(seq);
+        ends[side] = seq.back();
+        --loops;
+        ++stats_.absorbed;
+    };
+    struct Rotation {
+        uint32_t side, link, dropped, from;
+    };
+    std::vector<Rotation> trial;  // rotations since the last loop taken in
+    int trial_cost = 0;           // swaps they added
+    auto reverse = [&](uint32_t side, uint32_t from) { side ? path.reverse_back(from) : path.reverse_front(from); };
+    auto rotate = [&](uint32_t side, uint32_t h) {  // h: a free edge of ends[side] into the path
+        const uint32_t e = ends[side], x = mesh_.neighbor(h), px = path.position(x), n = path.size();
+        if (side ? px + 2 >= n : px < 2) return;  // x is the end's own neighbour
+        const uint32_t y = path.at(side ? px + 1 : px - 1);
+        uint32_t xy = kNone;
+        for (uint32_t k = 3 * x; k < 3 * x + 3; ++k)
+            if (used_[k] && mesh_.neighbor(k) == y) xy = k;
+        const int before = swaps_around({e, x, y});
+        set_pair(used_, xy, 0);
+        set_pair(used_, h, 1);
+        trial_cost += swaps_around({e, x, y}) - before;
+        reverse(side, side ? px + 1 : px);
+        trial.push_back({side, h, xy, side ? px + 1 : px});
+        ends[side] = y;
+    };
+    auto undo_trial = [&] {
+        for (size_t i = trial.size(); i-- > 0;) {
+            const Rotation& r = trial[i];
+            reverse(r.side, r.from);
+            set_pair(used_, r.link, 0);
+            set_pair(used_, r.dropped, 1);
+            ends[r.side] = Mesh::face(r.link);
+        }
+        trial.clear();
+        trial_cost = 0;
+    };
+    // A split join adds two triangles (two GL indices) and may add swaps of its own: a loop is
+    // worth taking in while the turns changed cost fewer than 4 swaps (best of 2, 4, unbounded on
+    // the libcgal-demo meshes; docs/algorithm.md).
+    constexpr int kSplitCost = 4;
+    constexpr uint64_t kWindow = 4096;  // rotations without a loop taken in before giving up
+    uint64_t rng = 0x9e3779b97f4a7c15ULL, budget = 16ULL * nf, idle = 0;
+    while (loops > 0 && budget > 0 && idle < kWindow) {
+        bool took = false;
+        for (uint32_t side = 0; side < 2; ++side)
+            for (Take t; (t = best_take(side)).link != kNone && trial_cost + t.cost < kSplitCost;) {
+                take(side, t);
+                took = true;
+                trial.clear();
+                trial_cost = 0;
+            }
+        if (took) {
+            idle = 0;
+            continue;
+        }
+        rng ^= rng << 13, rng ^= rng >> 7, rng ^= rng << 17;
+        const uint32_t side = rng & 1, h = 3 * ends[side] + (rng >> 1) % 3;
+        --budget, ++idle;
+        if (passable(h) && !used_[h] && find(sid_[mesh_.neighbor(h)]) == root) rotate(side, h);
+        if (trial_cost >= kSplitCost + 6) undo_trial();  // too far from the pattern: start again from the last take
+    }
+    undo_trial();
+}
+
 // Joins along the passable edge h (not crossed): a and b are the roots of its two faces.
 void MatchingBuilder::join(uint32_t h, uint32_t a, uint32_t b, bool cycle, bool pinned) {
     set_pair(used_, h, 1);
@@ -889,6 +1058,7 @@ StripResult MatchingBuilder::run() {
     settle_leftovers();
     label_structures();
     reduce_loops();
+    absorb_loops();
     merge_all();
     if (opt_.validate_each_split) mesh_.validate();
     if (!single_strip_ready() || stats_.splits > stats_.input_triangles) return fallback();
