@@ -333,11 +333,12 @@ TEST(ReadLimits, PlyPropertyTypesCgalCannotConvertAreRefusedNotCrashed) {
                 ".ply", {"'z'"}),
         "");
     // Elements other than vertices and faces are skipped whatever their types (CGAL needed uint halfedge ends).
-    EXPECT_EQ(triangles_of("ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\n"
-                           "property list uchar int vertex_indices\nelement halfedge 1\nproperty int source\nproperty int target\nend_header\n"
-                           "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n0 1\n",
-                           ".ply"),
-              1u);
+    EXPECT_EQ(
+        triangles_of("ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\n"
+                     "property list uchar int vertex_indices\nelement halfedge 1\nproperty int source\nproperty int target\nend_header\n"
+                     "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n0 1\n",
+                     ".ply"),
+        1u);
 }
 
 // CGAL turns colours on when red|r, green|g and blue|b each exist as uchar, then fetches one
@@ -352,9 +353,10 @@ TEST(ReadLimits, PlyColourPropertiesOfMixedTypesAreRefused) {
     const std::string mixed = "property uchar red\nproperty float green\nproperty uchar g\nproperty uchar blue\n";
     // Colours are not read, so colour properties of mixed types are valid PLY and read (CGAL crashed on them).
     EXPECT_EQ(triangles_of(ply("vertex", mixed, " 1 0.5 2 3", ""), ".ply"), 1u);
-    EXPECT_EQ(triangles_of(ply("face", "property uchar red\nproperty uchar green\nproperty float blue\nproperty uchar b\n", "", " 1 2 0.5 3"),
-                           ".ply"),
-              1u);
+    EXPECT_EQ(
+        triangles_of(ply("face", "property uchar red\nproperty uchar green\nproperty float blue\nproperty uchar b\n", "", " 1 2 0.5 3"),
+                     ".ply"),
+        1u);
     EXPECT_EQ(triangles_of(ply("vertex", "property uchar r\nproperty uchar green\nproperty float g\nproperty uchar b\n", " 1 2 0.5 3", ""),
                            ".ply"),
               1u);
