@@ -5,6 +5,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -50,29 +51,33 @@ std::string load_bytes(const std::string& path, const ReadOptions& options) {
     const std::uint64_t size = S_ISREG(st.st_mode) ? static_cast<std::uint64_t>(st.st_size) : 0;
     if (size > options.max_input_bytes) fail(path, too_large);
     // A regular file is read into a buffer of its size (it may still grow or shrink meanwhile);
-    // a pipe has no size to ask for, so it grows, and is refused as soon as it passes the limit.
+    // a pipe has no size to ask for, so the buffer grows, refused as soon as it passes the limit.
     std::string data(static_cast<std::size_t>(size), '\0');
     std::size_t have = 0;
+    auto read_some = [&](char* into, std::size_t room) {
+        for (;;) {
+            const ssize_t n = ::read(f.fd, into, room);
+            if (n >= 0) return static_cast<std::size_t>(n);
+            if (errno != EINTR) fail(path, std::string("read error (") + std::strerror(errno) + ")");
+        }
+    };
     for (;;) {
-        if (have == data.size()) {
-            if (data.size() >= options.max_input_bytes) {
-                char probe = 0;
-                const ssize_t n = ::read(f.fd, &probe, 1);
-                if (n == 0) break;
-                if (n > 0) fail(path, too_large);
-                if (errno == EINTR) continue;
-                fail(path, std::string("read error (") + std::strerror(errno) + ")");
-            }
-            const std::uint64_t grown = std::max<std::uint64_t>(data.size() * 2, 1 << 16);
-            data.resize(static_cast<std::size_t>(std::min<std::uint64_t>(grown, options.max_input_bytes)));
+        if (have < data.size()) {
+            const std::size_t n = read_some(data.data() + have, data.size() - have);
+            if (n == 0) break;
+            have += n;
+            continue;
         }
-        const ssize_t n = ::read(f.fd, data.data() + have, data.size() - have);
+        // The buffer is full: a probe tells the end of a file from more data (a pipe, or a file
+        // that grew), so that a complete file is never copied into a larger buffer.
+        char probe[1 << 16];
+        const std::size_t n = read_some(probe, sizeof probe);
         if (n == 0) break;
-        if (n < 0) {
-            if (errno == EINTR) continue;
-            fail(path, std::string("read error (") + std::strerror(errno) + ")");
-        }
-        have += static_cast<std::size_t>(n);
+        if (have + n > options.max_input_bytes) fail(path, too_large);
+        const std::uint64_t grown = std::max<std::uint64_t>({data.size() * std::uint64_t{2}, have + n, sizeof probe});
+        data.resize(static_cast<std::size_t>(std::min<std::uint64_t>(grown, options.max_input_bytes)));
+        std::memcpy(data.data() + have, probe, n);
+        have += n;
     }
     data.resize(have);
     if (S_ISFIFO(st.st_mode)) data.shrink_to_fit();

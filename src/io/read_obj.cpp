@@ -61,9 +61,20 @@ private:
 TriangleSoup ObjReader::run() {
     const char* p = d_.data();
     const char* end = p + d_.size();
-    // About 20 bytes per vertex line and as many per triangle in typical files: a hint only.
-    out_.soup.points.reserve(d_.size() / 64);
-    out_.reserve_triangles(d_.size() / 64);
+    // Counting the v and f lines first costs one memchr pass and saves the reallocations (time,
+    // and up to twice the memory) of growing the arrays.
+    std::size_t v_lines = 0, f_lines = 0;
+    for (const char* q = p; q != end;) {
+        while (q != end && (*q == ' ' || *q == '\t')) ++q;
+        if (end - q >= 2 && (q[1] == ' ' || q[1] == '\t')) {
+            v_lines += q[0] == 'v';
+            f_lines += q[0] == 'f';
+        }
+        const char* nl = static_cast<const char*>(std::memchr(q, '\n', static_cast<std::size_t>(end - q)));
+        q = nl ? nl + 1 : end;
+    }
+    out_.soup.points.reserve(v_lines);
+    out_.reserve_triangles(f_lines);
     while (p != end) {
         ++line_;
         const char* nl = static_cast<const char*>(std::memchr(p, '\n', static_cast<std::size_t>(end - p)));
