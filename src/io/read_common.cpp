@@ -32,7 +32,7 @@ struct Fd {
 
 }  // namespace
 
-std::string load_bytes(const std::string& path, const ReadOptions& options) {
+Bytes load_bytes(const std::string& path, const ReadOptions& options) {
     // Checked before opening: opening a device may itself do something (a tape rewinds).
     std::error_code ec;
     const auto status = std::filesystem::status(path, ec);
@@ -52,8 +52,9 @@ std::string load_bytes(const std::string& path, const ReadOptions& options) {
     if (size > options.max_input_bytes) fail(path, too_large);
     // A regular file is read into a buffer of its size (it may still grow or shrink meanwhile);
     // a pipe has no size to ask for, so the buffer grows, refused as soon as it passes the limit.
-    std::string data(static_cast<std::size_t>(size), '\0');
-    std::size_t have = 0;
+    Bytes data;
+    std::size_t capacity = static_cast<std::size_t>(size);
+    data.data.reset(new char[capacity]);
     auto read_some = [&](char* into, std::size_t room) {
         for (;;) {
             const ssize_t n = ::read(f.fd, into, room);
@@ -62,10 +63,10 @@ std::string load_bytes(const std::string& path, const ReadOptions& options) {
         }
     };
     for (;;) {
-        if (have < data.size()) {
-            const std::size_t n = read_some(data.data() + have, data.size() - have);
+        if (data.size < capacity) {
+            const std::size_t n = read_some(data.data.get() + data.size, capacity - data.size);
             if (n == 0) break;
-            have += n;
+            data.size += n;
             continue;
         }
         // The buffer is full: a probe tells the end of a file from more data (a pipe, or a file
@@ -73,14 +74,15 @@ std::string load_bytes(const std::string& path, const ReadOptions& options) {
         char probe[1 << 16];
         const std::size_t n = read_some(probe, sizeof probe);
         if (n == 0) break;
-        if (have + n > options.max_input_bytes) fail(path, too_large);
-        const std::uint64_t grown = std::max<std::uint64_t>({data.size() * std::uint64_t{2}, have + n, sizeof probe});
-        data.resize(static_cast<std::size_t>(std::min<std::uint64_t>(grown, options.max_input_bytes)));
-        std::memcpy(data.data() + have, probe, n);
-        have += n;
+        if (data.size + n > options.max_input_bytes) fail(path, too_large);
+        const std::uint64_t grown = std::max<std::uint64_t>({capacity * std::uint64_t{2}, data.size + n, sizeof probe});
+        capacity = static_cast<std::size_t>(std::min<std::uint64_t>(grown, options.max_input_bytes));
+        std::unique_ptr<char[]> bigger(new char[capacity]);
+        std::memcpy(bigger.get(), data.data.get(), data.size);
+        std::memcpy(bigger.get() + data.size, probe, n);
+        data.data = std::move(bigger);
+        data.size += n;
     }
-    data.resize(have);
-    if (S_ISFIFO(st.st_mode)) data.shrink_to_fit();
     return data;
 }
 

@@ -12,6 +12,7 @@
 #include <charconv>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -23,9 +24,16 @@ namespace singlestrip::io_detail {
 
 [[noreturn]] void fail(const std::string& path, const std::string& what);
 
+/// A file's bytes: an uninitialised buffer (zero-filling hundreds of MB first would be wasted).
+struct Bytes {
+    std::unique_ptr<char[]> data;
+    std::size_t size = 0;
+    std::string_view view() const { return {data.get(), size}; }
+};
+
 /// Every byte of `path` (a regular file or a pipe, read to its end), refused past
 /// `options.max_input_bytes`, for a missing file, a directory, a device or a socket.
-std::string load_bytes(const std::string& path, const ReadOptions& options);
+Bytes load_bytes(const std::string& path, const ReadOptions& options);
 
 inline bool is_space(char c) {
     return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v';

@@ -32,10 +32,11 @@ TriangleSoup read_mesh_file(const std::string& path, const ReadOptions& options)
     else
         fail(path, "unknown input format '" + ext + "' (expected .obj, .off, .ply or .stl, or a format named with --input-format)");
 
-    std::string bytes = load_bytes(path, options);
-    if (std::all_of(bytes.begin(), bytes.end(), [](char c) { return is_space(c); })) fail(path, "empty file");
-    TriangleSoup soup = reader(path, bytes);
-    std::string().swap(bytes);
+    Bytes bytes = load_bytes(path, options);
+    const std::string_view d = bytes.view();
+    if (std::all_of(d.begin(), d.end(), [](char c) { return is_space(c); })) fail(path, "empty file");
+    TriangleSoup soup = reader(path, d);
+    bytes.data.reset();  // before the soup is handed over: the peak is the bytes plus the soup
     return soup;
 }
 

@@ -92,6 +92,7 @@ public:
     void strip(const long long* v, std::size_t k, long long restart, uint64_t item, const std::string& where);
     [[noreturn]] void bad_index(const std::string& where, const std::string& what, long long index) const;
     SoupBuilder& out() { return out_; }
+    unsigned long long vertices() const { return vertices_; }
     const std::string& path() const { return path_; }
 
 private:

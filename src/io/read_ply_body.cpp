@@ -231,6 +231,7 @@ bool BinaryBody::fast_triangles(const Element& e) {
     const Type t = e.props[0].type;
     if (t != Type::I32 && t != Type::U32) return false;
     long long v[255];
+    const unsigned long long nv = sink_.vertices();
     for (uint64_t i = 0; i < e.count; ++i) {
         if (left() < 1) truncated(path_, e, i);
         const std::size_t k = static_cast<unsigned char>(*p_);
@@ -240,7 +241,12 @@ bool BinaryBody::fast_triangles(const Element& e) {
                             " fit in the rest of the file");
         ++p_;
         for (std::size_t j = 0; j < k; ++j, p_ += 4) v[j] = t == Type::I32 ? load<int32_t>(p_, swap_) : load<uint32_t>(p_, swap_);
-        sink_.face(v, k, i, [] { return std::string(); });
+        // Triangles, nearly every face of most files, skip the general polygon path.
+        if (k == 3 && static_cast<unsigned long long>(v[0]) < nv && static_cast<unsigned long long>(v[1]) < nv &&
+            static_cast<unsigned long long>(v[2]) < nv)
+            sink_.out().add_triangle(static_cast<uint32_t>(v[0]), static_cast<uint32_t>(v[1]), static_cast<uint32_t>(v[2]));
+        else
+            sink_.face(v, k, i, [] { return std::string(); });
     }
     return true;
 }
