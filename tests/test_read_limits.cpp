@@ -1,6 +1,7 @@
 // Resource limits of read_mesh_file (issue 7, point 4): files whose declared counts are absurd for
-// their size must be refused with InputError (naming the file) BEFORE CGAL allocates for them or
-// loops over them. Each case runs in a forked child whose address space is capped at 512 MiB
+// their size must be refused with InputError (naming the file) before anything is allocated for
+// them or looped over. Many cases come from CGAL's readers (used until 2026-12); the strict
+// readers must still refuse them. Each case runs in a forked child whose address space is capped at 512 MiB
 // (RLIMIT_AS), so an attempted huge allocation shows up as a failure (bad_alloc or a kill), not as
 // a pass; alarm() there is a hang guard only, not a timing assertion. Valid variants of the same
 // formats (binary OFF, big-endian PLY, 32-bit list counts, colours, comments) must still be read.
