@@ -1,12 +1,15 @@
 // singlestrip — reading meshes, constraint files, and writing results atomically.
 //
 // Input formats (chosen by the file extension, case-insensitive):
-//   .obj  Wavefront OBJ (v / f records; f entries "i", "i/t", "i/t/n", "i//n"; 1-based)
-//   .off  OFF / COFF (colours ignored)
-//   .ply  PLY, ASCII or binary (little/big endian); extra vertex/face properties are ignored
+//   .obj  Wavefront OBJ (v / f records; f entries "i", "i/t", "i/t/n", "i//n"; 1-based, negative
+//         = relative; other records are skipped)
+//   .off  OFF / COFF / NOFF / CNOFF, ASCII or BINARY (colours and normals checked, not kept)
+//   .ply  PLY, ASCII or binary (little/big endian); faces from `face` and `tristrips` elements;
+//         other properties and elements are skipped
 //   .stl  STL, ASCII or binary
-// Parsing is done by CGAL's polygon-soup readers; singlestrip adds its own checks around them so
-// that every failure names the file, the element and the problem.
+// Each format has one strict parser (src/io/read_<format>.cpp, whose header states its grammar)
+// that reads the bytes once and names the file, the line (text) or element and item (binary),
+// and the problem of anything it refuses. Face numbers in messages are the file's polygons.
 //
 // Vertex numbering. Users name vertices by their index in the file, so vertices keep the file's
 // order and indices (0-based). Unreferenced vertices are kept (algorithms ignore them).
@@ -49,7 +52,11 @@ struct ReadOptions {
 ///        not one of the four), is malformed or truncated,
 ///        has a face index out of range ("face N references vertex K but the file has only M
 ///        vertices"), a NaN or infinite coordinate ("vertex N"), a polygon with fewer than 3
-///        corners, or no faces.
+///        corners, or no faces (the message then names the elements or records not read).
+/// PLY `tristrips`: each list holds strips separated by -1 (or, for unsigned entries, the
+/// type's largest value); triangle i of a strip is (v_i, v_i+1, v_i+2) for even i and
+/// (v_i+1, v_i, v_i+2) for odd i; triangles with a repeated vertex are skipped, and each strip
+/// triangle is a polygon of its own in `source_polygon`.
 /// Structural problems (repeated vertex, non-manifold, orientation, ...) are NOT checked here:
 /// see validate.hpp. Complexity O(file size); memory O(file size), never proportional to a
 /// count the file declares.
