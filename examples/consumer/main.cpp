@@ -27,8 +27,7 @@ int main(int argc, char** argv) {
         const VerifyReport report = verify(check);
 
         std::cout << input << ": " << r.arrays.faces.size() << " faces, " << r.indices.size() << " strip indices, route of "
-                  << route.points.size() << " points and length " << route.length << ", verify " << (report.ok() ? "OK" : "FAILED")
-                  << '\n';
+                  << route.points.size() << " points and length " << route.length << ", verify " << (report.ok() ? "OK" : "FAILED") << '\n';
         return report.ok() ? 0 : 1;
     } catch (const Error& e) {
         std::cerr << "consumer: " << e.what() << '\n';
