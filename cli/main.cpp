@@ -196,11 +196,15 @@ public:
     void done(const std::string& path) { written_.push_back(path); }
     void commit() {
         if (!stdout_tmp_.empty()) {
+            // Unlinked before copying: a reader that stops early (`| head`) ends this process by
+            // SIGPIPE, which must not leave the temporary behind.
             std::ifstream in(stdout_tmp_, std::ios::binary);
+            std::error_code ec;
+            std::filesystem::remove(stdout_tmp_, ec);
             std::cout << in.rdbuf();
             std::cout.flush();
             if (!std::cout) throw ss::OutputError("standard output: write failed");
-            written_ = {stdout_tmp_};  // removed by the destructor
+            written_.clear();
             return;
         }
         written_.clear();
