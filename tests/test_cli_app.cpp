@@ -178,6 +178,10 @@ TEST(CliApp, IndexBaseOne) {
     EXPECT_EQ(bad.code, 3);
     EXPECT_TRUE(has(bad, "line 1: vertex 0 does not exist")) << bad.out;
     EXPECT_EQ(cli("strip " + q(kRoom) + " -o " + q(s / "x.ply") + " --index-base 2").code, 2);
+    spit(s / "notedge1.txt", "1 651\n");
+    const Exec edge = cli("strip " + q(kRoom) + " -o " + q(s / "x.ply") + " --constraints " + q(s / "notedge1.txt") + " --index-base 1");
+    EXPECT_EQ(edge.code, 4);
+    EXPECT_TRUE(has(edge, "counted from 0 here")) << edge.out;
 }
 
 TEST(CliApp, PathFiles) {
