@@ -9,7 +9,9 @@
 // that every failure names the file, the element and the problem.
 //
 // Vertex numbering. Users name vertices by their index in the file, so vertices keep the file's
-// order and indices (0-based). Unreferenced vertices are kept (algorithms ignore them).
+// order and indices (0-based; the CLI's `--index-base 1` reads user numbers 1-based through
+// from_index_base() and read_constraints_based()). Unreferenced vertices are kept (algorithms
+// ignore them).
 // STL has no shared vertices: its corners are WELDED — corners with exactly equal coordinates
 // (equal as doubles after parsing, so -0 == +0; no tolerance) are one vertex, and vertices are
 // numbered in order of first appearance in the file. Corners that differ in the last bit stay
