@@ -35,7 +35,9 @@ struct UnionFind {
     }
 };
 
-std::string edge_name(uint32_t a, uint32_t b) { return "edge (" + std::to_string(a) + ", " + std::to_string(b) + ")"; }
+std::string edge_name(uint32_t a, uint32_t b) {
+    return "edge (" + std::to_string(a) + ", " + std::to_string(b) + ")";
+}
 
 /// Collects problems of one kind, keeping the first kMaxPerKind messages.
 struct ProblemList {
@@ -58,18 +60,25 @@ struct ProblemList {
 struct Analysis {
     const TriangleSoup& soup;
     std::size_t nf = 0, nv = 0;
-    std::vector<char> usable;        // face in range and with three distinct vertices
-    std::vector<uint32_t> twin;      // half-edge 3f+k -> its partner on a 2-face edge, else kNo
-    std::vector<uint32_t> comp;      // edge-connected component root per usable face
-    std::vector<int8_t> flip;        // orientation BFS result (1 = flip to be consistent)
-    ProblemList out_of_range{"index_out_of_range"}, repeated{"repeated_vertex"}, duplicate{"duplicate_face"},
-        nm_edge{"non_manifold_edge"}, nm_vertex{"non_manifold_vertex"}, inconsistent{"inconsistent_orientation"},
-        non_orientable{"non_orientable"};
+    std::vector<char> usable;    // face in range and with three distinct vertices
+    std::vector<uint32_t> twin;  // half-edge 3f+k -> its partner on a 2-face edge, else kNo
+    std::vector<uint32_t> comp;  // edge-connected component root per usable face
+    std::vector<int8_t> flip;    // orientation BFS result (1 = flip to be consistent)
+    ProblemList out_of_range{"index_out_of_range"}, repeated{"repeated_vertex"}, duplicate{"duplicate_face"}, nm_edge{"non_manifold_edge"},
+        nm_vertex{"non_manifold_vertex"}, inconsistent{"inconsistent_orientation"}, non_orientable{"non_orientable"};
     uint64_t edges = 0, boundary_edges = 0, non_manifold_edges = 0, referenced = 0, boundary_loops = 0;
     std::vector<uint64_t> component_sizes;
     bool orientable = true, oriented = true;
 
     explicit Analysis(const TriangleSoup& s) : soup(s), nf(s.triangles.size()), nv(s.points.size()) { run(); }
+
+    /// Face number for messages: the triangle, and for a file with polygons the file's polygon
+    /// (face numbers count triangles after fan triangulation; the user knows the file's faces).
+    std::string fid(std::size_t f) const {
+        const auto& sp = soup.source_polygon;
+        const bool polygons = sp.size() == nf && nf > 0 && sp.back() != nf - 1;
+        return std::to_string(f) + (polygons ? " (polygon " + std::to_string(sp[f]) + " of the file)" : std::string());
+    }
 
     uint32_t from(uint32_t h) const { return soup.triangles[h / 3][h % 3]; }
     uint32_t to(uint32_t h) const { return soup.triangles[h / 3][(h % 3 + 1) % 3]; }
@@ -81,7 +90,7 @@ struct Analysis {
             const auto& t = soup.triangles[f];
             for (uint32_t v : t)
                 if (v >= nv) {
-                    out_of_range.add("face " + std::to_string(f) + " references vertex " + std::to_string(v) + " but there are only " +
+                    out_of_range.add("face " + fid(f) + " references vertex " + std::to_string(v) + " but there are only " +
                                      std::to_string(nv) + " vertices");
                     usable[f] = 0;
                     break;
@@ -89,8 +98,8 @@ struct Analysis {
             if (!usable[f]) continue;
             for (uint32_t v : t) used[v] = 1;
             if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) {
-                repeated.add("face " + std::to_string(f) + " (" + std::to_string(t[0]) + ", " + std::to_string(t[1]) + ", " +
-                             std::to_string(t[2]) + ") repeats a vertex");
+                repeated.add("face " + fid(f) + " (" + std::to_string(t[0]) + ", " + std::to_string(t[1]) + ", " + std::to_string(t[2]) +
+                             ") repeats a vertex");
                 usable[f] = 0;
             }
         }
@@ -186,14 +195,13 @@ struct Analysis {
             twin[b[1]] = b[0];
             if (from(b[0]) == from(b[1])) {
                 oriented = false;
-                inconsistent.add(edge_name(lo, hi) + ": faces " + std::to_string(b[0] / 3) + " and " + std::to_string(b[1] / 3) +
-                                 " both run from " + std::to_string(from(b[0])) + " to " + std::to_string(to(b[0])) +
-                                 " (inconsistent orientation)");
+                inconsistent.add(edge_name(lo, hi) + ": faces " + fid(b[0] / 3) + " and " + fid(b[1] / 3) + " both run from " +
+                                 std::to_string(from(b[0])) + " to " + std::to_string(to(b[0])) + " (inconsistent orientation)");
             }
         } else {
             ++non_manifold_edges;
             std::string fs;
-            for (auto i = b; i < e; ++i) fs += (i > b ? ", " : "") + std::to_string(*i / 3);
+            for (auto i = b; i < e; ++i) fs += (i > b ? ", " : "") + fid(*i / 3);
             nm_edge.add(edge_name(lo, hi) + " is shared by " + std::to_string(n) + " faces (" + fs + "); at most 2 are allowed");
         }
     }
@@ -215,9 +223,9 @@ struct Analysis {
             while (j < by_third.size() && by_third[j].first == by_third[i].first) ++j;
             if (j - i > 1) {
                 std::string faces;
-                for (std::size_t k = i; k < j; ++k) faces += (k > i ? ", " : "") + std::to_string(by_third[k].second);
-                duplicate.add("faces " + faces + " are duplicates (same vertices " + std::to_string(lo) + ", " + std::to_string(hi) +
-                              ", " + std::to_string(by_third[i].first) + ")");
+                for (std::size_t k = i; k < j; ++k) faces += (k > i ? ", " : "") + fid(by_third[k].second);
+                duplicate.add("faces " + faces + " are duplicates (same vertices " + std::to_string(lo) + ", " + std::to_string(hi) + ", " +
+                              std::to_string(by_third[i].first) + ")");
             }
             i = j;
         }
@@ -263,10 +271,10 @@ struct Analysis {
                     } else if (flip[g] != want && !conflict) {
                         conflict = true;
                         orientable = false;
-                        non_orientable.add("the surface containing face " + std::to_string(s) +
-                                           " is not orientable (Moebius-like): orientations propagated from face " + std::to_string(s) +
+                        non_orientable.add("the surface containing face " + fid(s) +
+                                           " is not orientable (Moebius-like): orientations propagated from face " + fid(s) +
                                            " disagree across " + edge_name(std::min(from(h), to(h)), std::max(from(h), to(h))) +
-                                           " between faces " + std::to_string(f) + " and " + std::to_string(g));
+                                           " between faces " + fid(f) + " and " + fid(g));
                     }
                 }
             }
@@ -282,7 +290,8 @@ struct Analysis {
 
     std::size_t total_problems() const {
         std::size_t n = (nf == 0 ? 1 : 0) + (component_sizes.size() > 1 ? 1 : 0);
-        for (const ProblemList* l : {&out_of_range, &repeated, &duplicate, &nm_edge, &nm_vertex, &inconsistent, &non_orientable}) n += l->total;
+        for (const ProblemList* l : {&out_of_range, &repeated, &duplicate, &nm_edge, &nm_vertex, &inconsistent, &non_orientable})
+            n += l->total;
         return n;
     }
 
@@ -338,7 +347,9 @@ long long apply_flips(TriangleSoup& soup, const std::vector<int8_t>& flip) {
 
 }  // namespace
 
-std::vector<SoupProblem> diagnose_soup(const TriangleSoup& soup) { return Analysis(soup).problems(); }
+std::vector<SoupProblem> diagnose_soup(const TriangleSoup& soup) {
+    return Analysis(soup).problems();
+}
 
 void validate_soup(const TriangleSoup& soup, const std::string& filename_for_messages) {
     Analysis a(soup);
@@ -398,7 +409,8 @@ MeshInfo mesh_info(const TriangleSoup& soup) {
     info.genus_valid = a.orientable && a.non_manifold_edges == 0 && a.nm_vertex.total == 0 && info.components >= 1 &&
                        a.out_of_range.total == 0 && a.repeated.total == 0;
     if (info.genus_valid)
-        info.genus = (2 * static_cast<long long>(info.components) - info.euler_characteristic - static_cast<long long>(info.boundary_loops)) / 2;
+        info.genus =
+            (2 * static_cast<long long>(info.components) - info.euler_characteristic - static_cast<long long>(info.boundary_loops)) / 2;
     return info;
 }
 

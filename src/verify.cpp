@@ -1154,7 +1154,8 @@ VerifyReport verify_files(TriangleSoup input, const std::string& out_path, const
         vi.out_parent = std::move(om.parent);
     }
     if (options.indices_path) vi.indices = read_index_file(*options.indices_path);
-    if (options.constraints_path) vi.constraints = read_constraints(*options.constraints_path, static_cast<uint32_t>(vi.in_points.size()));
+    if (options.constraints_path)
+        vi.constraints = read_constraints_based(*options.constraints_path, static_cast<uint32_t>(vi.in_points.size()), options.index_base);
     vi.source = options.source;
     vi.target = options.target;
     if (options.cycles_path) vi.cycles = read_cycles_file(*options.cycles_path);

@@ -261,10 +261,21 @@ TEST(WriteMesh, PlyHasBinaryLayoutWithParent) {
 
 TEST(WriteMesh, UnknownExtensionIsRequestErrorAndWritesNothing) {
     fs::path dir = scratch_dir("ext");
-    const std::string path = (dir / "out.stl").string();
+    const std::string path = (dir / "out.xyz").string();
     EXPECT_THROW(write_strip_mesh(path, kTetraPoints, kTetraFaces, {0, 1, 2, 3}), RequestError);
     EXPECT_THROW(output_format_for("noext"), RequestError);
     EXPECT_FALSE(fs::exists(path));
+    fs::remove_all(dir);
+}
+
+TEST(WriteMesh, BinaryStlReadsBackWelded) {
+    fs::path dir = scratch_dir("stl");
+    const std::string path = (dir / "out.stl").string();
+    write_strip_mesh(path, kTetraPoints, kTetraFaces, {0, 1, 2, 3});
+    EXPECT_EQ(fs::file_size(path), 84u + 50u * kTetraFaces.size());
+    const TriangleSoup back = read_mesh_file(path);
+    EXPECT_EQ(back.points.size(), 4u);
+    EXPECT_EQ(back.triangles.size(), kTetraFaces.size());
     fs::remove_all(dir);
 }
 

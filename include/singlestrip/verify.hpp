@@ -100,6 +100,7 @@ struct VerifyFileOptions {
     std::optional<uint32_t> target;
     std::optional<std::string> cycles_path;  ///< JSON {"cycles": [[face, ...], ...]}
     std::string input_format;                ///< ReadOptions::format for the input mesh
+    uint32_t index_base = 0;                 ///< vertex numbers in constraints_path start at 0 or 1
 };
 
 /// Reads the input mesh (read_mesh_file), the output mesh (read_output_mesh) and the optional
