@@ -271,12 +271,46 @@ std::vector<uint32_t> encode_triangle_strip(const std::vector<Triangle>& faces) 
     return out;
 }
 
-std::vector<Triangle> decode_triangle_strip(const std::vector<uint32_t>& indices) {
+std::vector<Triangle> decode_triangle_strip(const std::vector<uint32_t>& indices, std::optional<uint32_t> restart) {
     std::vector<Triangle> out;
+    size_t begin = 0;  // first index of the current strip: parity counts from there
     for (size_t i = 0; i + 2 < indices.size(); ++i) {
         const uint32_t a = indices[i], b = indices[i + 1], c = indices[i + 2];
+        if (restart && a == *restart) {
+            begin = i + 1;
+            continue;
+        }
+        if (restart && (b == *restart || c == *restart)) continue;
         if (a == b || b == c || a == c) continue;
-        out.push_back(i % 2 == 0 ? Triangle{a, b, c} : Triangle{b, a, c});
+        out.push_back((i - begin) % 2 == 0 ? Triangle{a, b, c} : Triangle{b, a, c});
+    }
+    return out;
+}
+
+const char* join_mode_name(JoinMode mode) noexcept { return mode == JoinMode::Restart ? "restart" : "degenerate"; }
+
+std::optional<JoinMode> parse_join_mode(std::string_view name) noexcept {
+    if (name == "degenerate") return JoinMode::Degenerate;
+    if (name == "restart") return JoinMode::Restart;
+    return std::nullopt;
+}
+
+std::vector<uint32_t> join_strips(const std::vector<std::vector<uint32_t>>& strips, JoinMode mode, uint32_t restart) {
+    std::vector<uint32_t> out;
+    for (const auto& s : strips) {
+        if (s.empty()) throw InternalError("join_strips: empty strip");
+        if (!out.empty()) {
+            if (mode == JoinMode::Restart) {
+                out.push_back(restart);
+            } else {
+                // The next strip must start at an even position to keep its windings.
+                const uint32_t last = out.back();
+                out.push_back(last);
+                out.push_back(s.front());
+                if (out.size() % 2 == 1) out.push_back(s.front());
+            }
+        }
+        out.insert(out.end(), s.begin(), s.end());
     }
     return out;
 }
