@@ -23,6 +23,7 @@
 #include "singlestrip/gltf.hpp"
 #include "singlestrip/io.hpp"
 #include "singlestrip/pipeline.hpp"
+#include "singlestrip/repair.hpp"
 #include "singlestrip/report.hpp"
 #include "singlestrip/strip.hpp"
 #include "singlestrip/validate.hpp"
@@ -91,6 +92,7 @@ json info_json(const std::string& input, const ss::MeshInfo& m, long long flippe
     j["orientable"] = m.orientable;
     j["oriented"] = m.oriented;
     if (flipped >= 0) j["faces_flipped_by_orient"] = flipped;
+    j["unwelded_vertices"] = m.unwelded_vertices;
     j["valid"] = m.valid();
     json ps = json::array();
     for (const auto& p : m.problems) ps.push_back({{"kind", p.kind}, {"message", p.message}});
@@ -118,6 +120,7 @@ std::string info_text(const std::string& input, const ss::MeshInfo& m, long long
       << "Euler characteristic: " << m.euler_characteristic << '\n'
       << "genus:                " << (m.genus_valid ? std::to_string(m.genus) : std::string("n/a (not a manifold orientable surface)"))
       << '\n'
+      << "unwelded vertices:    " << m.unwelded_vertices << (m.unwelded_vertices ? " (--weld or --repair merges them)\n" : "\n")
       << "orientable:           " << yes_no(m.orientable) << '\n'
       << "consistently oriented:" << ' ' << yes_no(m.oriented);
     if (flipped >= 0) o << " (after --orient flipped " << flipped << " faces)";
@@ -132,15 +135,39 @@ std::string info_text(const std::string& input, const ss::MeshInfo& m, long long
     return o.str();
 }
 
-int run_info(const std::string& input, const std::string& format, bool as_json, bool orient) {
+/// `info`, `strip`, `verify`: --weld and --repair (repair.hpp).
+struct RepairArgs {
+    bool weld = false, repair = false;
+};
+
+void add_repair_options(CLI::App* app, RepairArgs& r) {
+    app->add_flag("--weld", r.weld, "Merge vertices with exactly equal coordinates first (always done for STL)");
+    app->add_flag("--repair", r.repair,
+                  "Repair first: weld, drop degenerate and duplicate faces, cut non-manifold and non-orientable parts apart, "
+                  "orient (docs/repair.md)");
+}
+
+int run_info(const std::string& input, const std::string& format, bool as_json, bool orient, const RepairArgs& ra) {
     ss::TriangleSoup soup = load_input(input, format);
+    std::optional<ss::RepairReport> repaired;
+    if (ra.repair) {
+        ss::RepairedSoup rs = ss::repair_soup(soup);
+        soup = std::move(rs.soup);
+        repaired = std::move(rs.report);
+        std::cerr << "singlestrip: " << input << ": repair: " << repaired->summary() << '\n';
+    } else if (ra.weld) {
+        std::cerr << "singlestrip: " << input << ": weld: " << ss::weld_soup(soup) << " vertices merged\n";
+    }
     long long flipped = -1;
     if (orient) flipped = ss::orient_soup(soup);  // -1: not orientable, reported as a problem
     const ss::MeshInfo m = ss::mesh_info(soup);
-    if (as_json)
-        std::cout << info_json(input, m, orient ? flipped : -1).dump(2) << '\n';
-    else
+    if (as_json) {
+        json j = info_json(input, m, orient ? flipped : -1);
+        if (repaired) j["repair"] = json::parse(ss::repair_json(*repaired));
+        std::cout << j.dump(2) << '\n';
+    } else {
         std::cout << info_text(input, m, orient ? flipped : -1);
+    }
     return m.valid() ? ss::kExitOk : ss::kExitBadInput;
 }
 
@@ -154,6 +181,9 @@ struct StripArgs {
     bool with_indices = false, with_cycles = false;
     std::optional<uint32_t> seed_face, source, target;
     bool no_greedy = false, orient = false;
+    RepairArgs fix;
+    ss::JoinMode join = ss::JoinMode::Degenerate;
+    uint32_t restart_index = 0xffffffffu;
     ss::StripEngine engine = ss::StripEngine::Matching;
 };
 
@@ -182,6 +212,10 @@ ss::PipelineOptions pipeline_options(const StripArgs& a) {
     o.strip.source = a.source;
     o.strip.target = a.target;
     o.orient = a.orient;
+    o.weld = a.fix.weld;
+    o.repair = a.fix.repair;
+    o.join = a.join;
+    o.restart_index = a.restart_index;
     o.cycles = a.cycles || a.cycles_obj;
     o.name = a.input;
     o.constraints_file = a.constraints;
@@ -192,7 +226,7 @@ ss::PipelineOptions pipeline_options(const StripArgs& a) {
 double write_outputs(const StripArgs& a, const ss::PipelineResult& r, OutputSet& outputs) {
     Stopwatch clock;
     if (ss::is_gltf_path(a.output))
-        ss::write_gltf_strip(a.output, r.arrays, r.indices);
+        ss::write_gltf_strip(a.output, r.arrays, ss::degenerate_joined_indices(r));
     else
         ss::write_strip_mesh(a.output, r.arrays.points, r.arrays.faces, r.arrays.parent);
     outputs.done(a.output);
@@ -214,11 +248,17 @@ double write_outputs(const StripArgs& a, const ss::PipelineResult& r, OutputSet&
 void print_summary(const std::string& input, const ss::PipelineResult& r) {
     const auto& st = r.strip.stats;
     const auto& t = r.seconds;
-    char line[512];
+    if (r.repair) std::cerr << "singlestrip: " << input << ": repair: " << r.repair->summary() << '\n';
+    if (r.options.weld && !r.options.repair) std::cerr << "singlestrip: " << input << ": weld: " << r.welded << " vertices merged\n";
+    for (const auto& w : r.warnings) std::cerr << "singlestrip: " << input << ": warning: " << w << '\n';
+    const std::string strips = r.components.size() == 1 ? std::string("1 strip")
+                                                         : std::to_string(r.components.size()) + " strips (" +
+                                                               ss::join_mode_name(r.options.join) + " joins)";
+    char line[640];
     std::snprintf(line, sizeof line,
-                  "singlestrip: %s: %u -> %u triangles (%+.1f%%, %u splits), 1 strip of %zu indices (%.3f per input triangle), "
+                  "singlestrip: %s: %u -> %u triangles (%+.1f%%, %u splits), %s of %zu indices (%.3f per input triangle), "
                   "genus %lld, %u boundary loops; read %.3fs build %.3fs strip %.3fs write %.3fs\n",
-                  input.c_str(), st.input_triangles, st.output_triangles, ss::extra_percent(st), st.splits, r.indices.size(),
+                  input.c_str(), st.input_triangles, st.output_triangles, ss::extra_percent(st), st.splits, strips.c_str(), r.indices.size(),
                   ss::indices_per_triangle(st, r.indices.size()), st.genus, st.boundary_loops, t.read, t.build, t.strip, t.write);
     std::cerr << line;
 }
@@ -254,6 +294,9 @@ struct VerifyArgs {
     std::optional<std::string> indices, constraints, cycles;
     std::optional<uint32_t> source, target;
     std::string input_format;  ///< `--input-format`
+    RepairArgs fix;
+    bool orient = false;
+    uint32_t restart_index = 0xffffffffu;
 };
 
 int run_verify(const VerifyArgs& a) {
@@ -268,6 +311,10 @@ int run_verify(const VerifyArgs& a) {
     o.target = a.target;
     o.cycles_path = a.cycles;
     o.input_format = a.input_format;
+    o.repair = a.fix.repair;
+    o.weld = a.fix.weld;
+    o.orient = a.orient;
+    o.restart_index = a.restart_index;
     // The built-in model has no file: it is generated and checked like a read input.
     const ss::VerifyReport rep = ss::is_builtin_input(a.input) ? ss::verify_files(load_input(a.input, a.input_format), a.output, o)
                                                                : ss::verify_files(a.input, a.output, o);
@@ -294,6 +341,8 @@ int main(int argc, char** argv) {
     info->add_option("INPUT", info_input, "Input mesh file or builtin:genus2")->required();
     info->add_flag("--json", info_json_flag, "Machine-readable JSON output");
     info->add_flag("--orient", info_orient, "Consistently re-orient an orientable mesh before reporting");
+    RepairArgs info_fix;
+    add_repair_options(info, info_fix);
     const char* kInputFormatHelp = "Format of INPUT (obj, off, ply, stl) when its name does not tell, e.g. /dev/stdin";
     const auto input_format_check = CLI::IsMember({"obj", "off", "ply", "stl"}, CLI::ignore_case);
     std::string info_format;
@@ -316,7 +365,13 @@ int main(int argc, char** argv) {
         strip, [&sa](ss::StripEngine e) { sa.engine = e; },
         "Strip engine: matching (default) or growth (the paper's builder, for comparison)");
     strip->add_flag("--no-greedy", sa.no_greedy, "Use the paper's plain same-direction turn rule");
-    strip->add_flag("--orient", sa.orient, "Consistently re-orient an orientable mesh first");
+    strip->add_flag("--orient", sa.orient, "Consistently re-orient an orientable mesh first (each component keeps its majority)");
+    add_repair_options(strip, sa.fix);
+    strip->add_option_function<std::string>(
+             "--join", [&sa](const std::string& m) { sa.join = *ss::parse_join_mode(m); },
+             "Several components: join their strips in the index file by degenerate triangles (default) or a restart index")
+        ->check(CLI::IsMember({"degenerate", "restart"}));
+    strip->add_option("--restart-index", sa.restart_index, "Restart index for --join restart (default 4294967295)");
     strip->add_option("--input-format", sa.input_format, kInputFormatHelp)->check(input_format_check);
     strip->add_option("--constraints", sa.constraints, "Edges the strip must not cross: one polyline of vertex indices per line");
     strip->add_option("--source", sa.source, "The strip starts at a face incident to this input vertex");
@@ -336,6 +391,9 @@ int main(int argc, char** argv) {
     verify->add_option("--target", va.target, "Required last-face vertex");
     verify->add_option("--cycles", va.cycles, "Cycles JSON to check for independence");
     verify->add_option("--input-format", va.input_format, kInputFormatHelp)->check(input_format_check);
+    add_repair_options(verify, va.fix);
+    verify->add_flag("--orient", va.orient, "OUT was made with --orient: check against the re-oriented input");
+    verify->add_option("--restart-index", va.restart_index, "Restart index in the --indices file (default 4294967295)");
 
 #ifdef SINGLESTRIP_HAVE_RENDER
     ss::render::RenderArgs ra;
@@ -371,7 +429,7 @@ int main(int argc, char** argv) {
     }
 
     try {
-        if (info->parsed()) return run_info(info_input, info_format, info_json_flag, info_orient);
+        if (info->parsed()) return run_info(info_input, info_format, info_json_flag, info_orient, info_fix);
         if (strip->parsed()) {
             if (sa.out_dir) {
                 if (!sa.output.empty() || sa.constraints || sa.source || sa.target || sa.report || sa.indices || sa.cycles ||
@@ -389,6 +447,9 @@ int main(int argc, char** argv) {
                 b.greedy = !sa.no_greedy;
                 b.engine = sa.engine;
                 b.orient = sa.orient;
+                b.weld = sa.fix.weld;
+                b.repair = sa.fix.repair;
+                b.join = sa.join;
                 b.seed_face = sa.seed_face;
                 b.threads = sa.jobs;
                 return ss::run_batch(sa.inputs, b, std::cout);

@@ -526,14 +526,48 @@ std::vector<uint32_t> infer_parents(const VerifyInput& in, const Adjacency& out,
 
 // --- GL strip decoding (own implementation) -------------------------------------------------
 
-std::vector<Triangle> gl_decode(const std::vector<uint32_t>& s) {
+// Pieces between restart values are separate strips, each starting at even parity.
+std::vector<Triangle> gl_decode(const std::vector<uint32_t>& s, uint32_t restart) {
     std::vector<Triangle> out;
-    for (size_t i = 0; i + 2 < s.size(); ++i) {
-        const uint32_t a = s[i], b = s[i + 1], c = s[i + 2];
+    size_t piece = 0;
+    for (size_t i = 0; i < s.size(); ++i) {
+        if (s[i] == restart) {
+            piece = i + 1;
+            continue;
+        }
+        if (i < piece + 2 || s[i - 1] == restart || s[i - 2] == restart) continue;
+        const uint32_t a = s[i - 2], b = s[i - 1], c = s[i];
         if (a == b || b == c || a == c) continue;
-        out.push_back((i % 2 == 0) ? Triangle{a, b, c} : Triangle{b, a, c});
+        out.push_back(((i - 2 - piece) % 2 == 0) ? Triangle{a, b, c} : Triangle{b, a, c});
     }
     return out;
+}
+
+/// Edge-connected component of every output face (through manifold twins), numbered in order of
+/// first appearance; `count` gets their number.
+std::vector<uint32_t> out_components(const Adjacency& out, size_t& count) {
+    const size_t F = out.faces.size();
+    std::vector<uint32_t> comp(F, kNo);
+    count = 0;
+    std::vector<uint32_t> stack;
+    for (uint32_t s = 0; s < F; ++s) {
+        if (comp[s] != kNo) continue;
+        comp[s] = static_cast<uint32_t>(count);
+        stack.assign(1, s);
+        while (!stack.empty()) {
+            const uint32_t f = stack.back();
+            stack.pop_back();
+            for (uint32_t k = 0; k < 3; ++k) {
+                const uint32_t t = out.twin[3 * f + k];
+                if (t != kNo && comp[t / 3] == kNo) {
+                    comp[t / 3] = static_cast<uint32_t>(count);
+                    stack.push_back(t / 3);
+                }
+            }
+        }
+        ++count;
+    }
+    return comp;
 }
 
 // --- cycles -----------------------------------------------------------------------------------
@@ -761,6 +795,7 @@ std::string VerifyReport::to_string() const {
     if (ok()) {
         os << "OK: " << output_faces << " output faces (" << input_faces << " input), Euler characteristic " << euler_characteristic << ", "
            << boundary_loops << " boundary loop(s), genus " << genus;
+        if (strips > 1) os << ", " << strips << " strips (one per component)";
         if (cycles_checked) os << ", " << cycles_checked << " independent cycles";
         os << "\n";
     } else {
@@ -815,10 +850,6 @@ VerifyReport verify(const VerifyInput& in) {
     report.output_vertices = static_cast<size_t>(out.referenced_vertices);
     report.euler_characteristic = out.euler;
     report.boundary_loops = out.boundary_loops;
-    {
-        const long long h = static_cast<long long>(out.boundary_loops);
-        report.genus = (2 - out.euler - h) / 2;
-    }
     bool all_faces_ok = std::all_of(out.face_ok.begin(), out.face_ok.end(), [](bool b) { return b; });
     if (out.euler != inp.euler)
         fails.add("topology",
@@ -1004,14 +1035,33 @@ VerifyReport verify(const VerifyInput& in) {
                                             ") is not covered by output boundary edges");
     }
 
-    // ---- strip: consecutive faces share an edge
-    for (uint32_t f = 0; f + 1 < F; ++f) {
-        if (!out.face_ok[f] || !out.face_ok[f + 1]) continue;
-        std::array<uint32_t, 3> common{};
-        const uint32_t k = common_vertices(in.out_faces[f], in.out_faces[f + 1], common);
-        if (k != 2)
-            fails.add("strip", "faces " + std::to_string(f) + " and " + std::to_string(f + 1) + " share " + std::to_string(k) +
-                                   " vertices, not an edge");
+    // ---- strips: one per edge-connected component of the output, each a contiguous run of faces
+    // in which consecutive faces share an edge; a new strip starts exactly where the component changes.
+    size_t num_components = 0;
+    const std::vector<uint32_t> comp = out_components(out, num_components);
+    std::vector<uint32_t> strip_end;  // last face of each strip
+    {
+        std::vector<bool> seen(num_components, false);
+        seen[comp[0]] = true;
+        for (uint32_t f = 0; f + 1 < F; ++f) {
+            if (comp[f + 1] != comp[f]) {
+                strip_end.push_back(f);
+                if (seen[comp[f + 1]])
+                    fails.add("strip", "face " + std::to_string(f + 1) + " returns to an edge-connected component already stripped "
+                                                                         "(each component must be one contiguous strip)");
+                seen[comp[f + 1]] = true;
+                continue;
+            }
+            if (!out.face_ok[f] || !out.face_ok[f + 1]) continue;
+            std::array<uint32_t, 3> common{};
+            const uint32_t k = common_vertices(in.out_faces[f], in.out_faces[f + 1], common);
+            if (k != 2)
+                fails.add("strip", "faces " + std::to_string(f) + " and " + std::to_string(f + 1) + " share " + std::to_string(k) +
+                                       " vertices, not an edge");
+        }
+        strip_end.push_back(static_cast<uint32_t>(F - 1));
+        report.strips = strip_end.size();
+        report.genus = (2 * static_cast<long long>(num_components) - out.euler - static_cast<long long>(out.boundary_loops)) / 2;
     }
 
     // ---- index sequence
@@ -1019,13 +1069,13 @@ VerifyReport verify(const VerifyInput& in) {
         const auto& s = *in.indices;
         bool range_ok = true;
         for (size_t i = 0; i < s.size(); ++i)
-            if (s[i] >= in.out_points.size()) {
+            if (s[i] >= in.out_points.size() && s[i] != in.restart_index) {
                 fails.add("indices", "index " + std::to_string(i) + " = " + std::to_string(s[i]) + " out of range (" +
                                          std::to_string(in.out_points.size()) + " vertices)");
                 range_ok = false;
             }
         if (range_ok) {
-            const auto dec = gl_decode(s);
+            const auto dec = gl_decode(s, in.restart_index);
             if (dec.size() != F)
                 fails.add("indices",
                           "index sequence decodes to " + std::to_string(dec.size()) + " triangles, the output has " + std::to_string(F));
@@ -1111,19 +1161,24 @@ VerifyReport verify(const VerifyInput& in) {
             fails.add("source",
                       "first face 0 " + tri_str(in.out_faces[0]) + " does not contain source vertex " + std::to_string(*in.source));
     }
-    if (in.target) {
+    if (in.target) {  // the end of the first strip (the whole output when there is one)
+        const uint32_t last = strip_end.front();
         if (*in.target >= n)
             fails.add("target", "target vertex " + std::to_string(*in.target) + " is not an input vertex");
-        else if (!has_vertex(static_cast<uint32_t>(F - 1), *in.target))
-            fails.add("target", "last face " + std::to_string(F - 1) + " " + tri_str(in.out_faces[F - 1]) +
-                                    " does not contain target vertex " + std::to_string(*in.target));
+        else if (!has_vertex(last, *in.target))
+            fails.add("target", "last face " + std::to_string(last) + " " + tri_str(in.out_faces[last]) +
+                                    " of the first strip does not contain target vertex " + std::to_string(*in.target));
     }
 
     // ---- cycles
     if (in.cycles) {
         const long long h = static_cast<long long>(inp.boundary_loops);
         const long long expected = h > 0 ? 1 - inp.euler : 2 - inp.euler;
-        if (!out.manifold || !all_faces_ok) {
+        if (num_components > 1) {
+            report.cycles_checked = in.cycles->size();
+            report.notes.push_back("cycles: not checked (the output has " + std::to_string(num_components) +
+                                   " components; the cycle check covers one)");
+        } else if (!out.manifold || !all_faces_ok) {
             report.cycles_checked = in.cycles->size();
             if (static_cast<long long>(in.cycles->size()) != expected)
                 fails.add("cycles", "found " + std::to_string(in.cycles->size()) + " cycles, expected " + std::to_string(expected));
@@ -1135,30 +1190,6 @@ VerifyReport verify(const VerifyInput& in) {
 
     fails.finish();
     return report;
-}
-
-VerifyReport verify_files(const std::string& in_path, const std::string& out_path, const VerifyFileOptions& options) {
-    ReadOptions read;
-    read.format = options.input_format;
-    return verify_files(read_mesh_file(in_path, read), out_path, options);
-}
-
-VerifyReport verify_files(TriangleSoup input, const std::string& out_path, const VerifyFileOptions& options) {
-    VerifyInput vi;
-    vi.in_points = std::move(input.points);
-    vi.in_faces = std::move(input.triangles);
-    {
-        OutputMesh om = read_output_mesh(out_path);
-        vi.out_points = std::move(om.points);
-        vi.out_faces = std::move(om.faces);
-        vi.out_parent = std::move(om.parent);
-    }
-    if (options.indices_path) vi.indices = read_index_file(*options.indices_path);
-    if (options.constraints_path) vi.constraints = read_constraints(*options.constraints_path, static_cast<uint32_t>(vi.in_points.size()));
-    vi.source = options.source;
-    vi.target = options.target;
-    if (options.cycles_path) vi.cycles = read_cycles_file(*options.cycles_path);
-    return verify(vi);
 }
 
 }  // namespace singlestrip

@@ -22,15 +22,18 @@
 //     T-junction (every output edge with one face lies on an input boundary edge and the output
 //     boundary edges tile each input boundary edge exactly); same Euler characteristic and
 //     number of boundary loops as the input (referenced vertices only);
-//   * strip: consecutive faces share an edge (two common vertices);
+//   * strips: one per edge-connected component of the output, each a contiguous run of faces
+//     in which consecutive faces share an edge (two common vertices);
 //   * indices (optional): the standard GL_TRIANGLE_STRIP decoding (triangle i = s[i],s[i+1],
-//     s[i+2], odd i flipped, triangles with a repeated index skipped) gives exactly out_faces,
-//     in order, each with the same cyclic vertex order;
+//     s[i+2], odd i flipped, triangles with a repeated index skipped; `restart_index` ends a
+//     strip and the next starts at even parity) gives exactly out_faces, in order, each with the
+//     same cyclic vertex order (degenerate joins between strips decode to nothing);
 //   * constraints (optional): every pair is an input edge; no two consecutive faces share a
 //     constraint edge or a piece of one; no constraint edge is split (the edge is an output
 //     edge and no output vertex lies strictly inside it);
-//   * source/target (optional): the first face has vertex `source`, the last has `target`;
-//   * cycles (optional): each cycle is a closed chain of edge-adjacent output faces; there are
+//   * source/target (optional): the first face has vertex `source`, the last face of the first
+//     strip has `target`;
+//   * cycles (optional; one-component outputs only, else a note): each cycle is a closed chain of edge-adjacent output faces; there are
 //     2g+h-1 of them (2g for a closed surface); they are linearly independent in H1(M; Z2),
 //     tested by their intersection parities with a basis of H1(M, dM) built by tree-cotree on
 //     the output mesh, Gaussian elimination over Z2 (rank must equal the count).
@@ -68,6 +71,7 @@ struct VerifyInput {
     std::optional<uint32_t> source;
     std::optional<uint32_t> target;
     std::optional<std::vector<std::vector<uint32_t>>> cycles;  ///< face-index chains into out_faces
+    uint32_t restart_index = 0xffffffffu;                      ///< primitive restart value in `indices`
 };
 
 struct VerifyReport {
@@ -79,7 +83,8 @@ struct VerifyReport {
     size_t output_vertices = 0;          ///< referenced output vertices
     long long euler_characteristic = 0;  ///< of the output (referenced vertices)
     size_t boundary_loops = 0;           ///< of the output
-    long long genus = 0;                 ///< of the output, from Euler characteristic and loops
+    long long genus = 0;                 ///< of the output (summed over components), from Euler characteristic and loops
+    size_t strips = 0;                   ///< strips found (one per edge-connected component)
     size_t cycles_checked = 0;
     size_t cycle_rank = 0;  ///< Z2 rank of the cycles (when computed)
     [[nodiscard]] bool ok() const noexcept { return failures.empty(); }
@@ -100,11 +105,17 @@ struct VerifyFileOptions {
     std::optional<uint32_t> target;
     std::optional<std::string> cycles_path;  ///< JSON {"cycles": [[face, ...], ...]}
     std::string input_format;                ///< ReadOptions::format for the input mesh
+    uint32_t restart_index = 0xffffffffu;    ///< restart value in the indices file
+    /// OUT was made with --weld / --repair / --orient: the reference is the input after the SAME
+    /// step, replayed with the library's own weld_soup / repair_soup / orient_soup (repair.hpp,
+    /// validate.hpp) — this part of the check depends on the library, not on independent code.
+    /// Parents (input face ids) are mapped to the repaired faces; what repair changed is a note.
+    bool weld = false, repair = false, orient = false;
 };
 
 /// Reads the input mesh (read_mesh_file), the output mesh (read_output_mesh) and the optional
-/// files, then runs verify(). Parents come from the PLY `parent` property when present, else
-/// they are inferred geometrically.
+/// files, then runs verify() (after the weld / repair / orient replay asked for). Parents come
+/// from the PLY `parent` property when present, else they are inferred geometrically.
 /// \throw InputError (naming the file) when a file is missing, unreadable or malformed; the
 ///        verification results themselves are never thrown, they are in the report.
 VerifyReport verify_files(const std::string& in_path, const std::string& out_path, const VerifyFileOptions& options = {});
