@@ -311,9 +311,7 @@ int run_verify(const VerifyArgs& a) {
     o.target = a.target;
     o.cycles_path = a.cycles;
     o.input_format = a.input_format;
-    o.repair = a.fix.repair;
-    o.weld = a.fix.weld;
-    o.orient = a.orient;
+    o.steps = {a.fix.weld, a.fix.repair, a.orient};
     o.restart_index = a.restart_index;
     // The built-in model has no file: it is generated and checked like a read input.
     const ss::VerifyReport rep = ss::is_builtin_input(a.input) ? ss::verify_files(load_input(a.input, a.input_format), a.output, o)

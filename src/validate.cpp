@@ -309,24 +309,27 @@ struct Analysis {
     std::unique_ptr<UnionFind> corners_;
 };
 
-/// " (fix: ...)" naming the option that repairs each kind of problem in `ps` (docs/repair.md).
+/// " (fix: ...)" naming the option that repairs the kinds of problem in `ps` (docs/repair.md).
 std::string fix_hint(const std::vector<SoupProblem>& ps) {
-    static const std::vector<std::pair<std::string, std::string>> fixes = {
-        {"index_out_of_range", "--repair drops faces with an index out of range"},
-        {"repeated_vertex", "--repair drops faces that repeat a vertex"},
-        {"duplicate_face", "--repair drops duplicate faces"},
-        {"non_manifold_edge", "--repair cuts non-manifold edges and vertices apart"},
-        {"non_manifold_vertex", "--repair cuts non-manifold edges and vertices apart"},
-        {"inconsistent_orientation", "--orient (or --repair) re-orients the faces"},
-        {"non_orientable", "--repair cuts a non-orientable surface into an orientable piece"}};
+    static const std::vector<std::pair<std::string, std::string>> actions = {
+        {"index_out_of_range", "drops faces with an index out of range"},
+        {"repeated_vertex", "drops faces that repeat a vertex"},
+        {"duplicate_face", "drops duplicate faces"},
+        {"non_manifold_edge", "cuts non-manifold edges and vertices apart"},
+        {"non_manifold_vertex", "cuts non-manifold edges and vertices apart"},
+        {"non_orientable", "cuts a non-orientable surface into an orientable piece"},
+        {"inconsistent_orientation", "re-orients the faces"}};
+    auto present = [&](const std::string& kind) {
+        return std::any_of(ps.begin(), ps.end(), [&](const SoupProblem& p) { return p.kind == kind; });
+    };
     std::vector<std::string> said;
-    for (const auto& [kind, fix] : fixes) {
-        const bool present = std::any_of(ps.begin(), ps.end(), [&](const SoupProblem& p) { return p.kind == kind; });
-        if (present && std::find(said.begin(), said.end(), fix) == said.end()) said.push_back(fix);
-    }
-    std::string hint;
-    for (const auto& f : said) hint += (hint.empty() ? " (fix: " : "; ") + f;
-    return hint.empty() ? hint : hint + ")";
+    for (const auto& [kind, action] : actions)
+        if (present(kind) && std::find(said.begin(), said.end(), action) == said.end()) said.push_back(action);
+    if (said.empty()) return {};
+    if (said.size() == 1 && present("inconsistent_orientation")) return " (fix: --orient or --repair re-orients the faces)";
+    std::string hint = " (fix: --repair ";
+    for (std::size_t i = 0; i < said.size(); ++i) hint += (i == 0 ? "" : i + 1 == said.size() ? " and " : ", ") + said[i];
+    return hint + ")";
 }
 
 /// "<file>: p1; p2; ... (and N more problems ...) (fix: ...)"; `total` counts problems beyond the listed ones.

@@ -15,32 +15,38 @@ namespace {
 
 constexpr uint32_t kNo = 0xffffffffu;
 
-/// The reference input for OUT; `notes` say what the replay changed. `face_of_input[p]` maps an
-/// input face id (the output's parent) to the reference face, kNo for a dropped face.
-TriangleSoup reference_input(TriangleSoup input, const VerifyFileOptions& o, std::vector<uint32_t>& face_of_input,
-                             std::vector<std::string>& notes) {
-    face_of_input.clear();
-    if (o.repair) {
+}  // namespace
+
+std::vector<std::string> replay_input_steps(VerifyInput& vi, const InputSteps& steps) {
+    std::vector<std::string> notes;
+    TriangleSoup input;
+    input.points = std::move(vi.in_points);
+    input.triangles = std::move(vi.in_faces);
+    std::vector<uint32_t> face_of_input;
+    if (steps.repair) {
         RepairedSoup rs = repair_soup(input);
         face_of_input.assign(input.triangles.size(), kNo);
         for (uint32_t t = 0; t < rs.face_origin.size(); ++t) face_of_input[rs.face_origin[t]] = t;
         notes.push_back("checked against the input as repaired by the library's repair_soup (this part depends on the library): " +
                         rs.report.summary());
         input = std::move(rs.soup);
-    } else if (o.weld) {
+    } else if (steps.weld) {
         notes.push_back("checked against the input welded by the library's weld_soup: " + std::to_string(weld_soup(input)) +
                         " vertices merged");
     }
-    if (o.orient || o.repair) {
+    if (steps.orient || steps.repair) {
         const long long flipped = orient_soup(input);
-        if (flipped > 0 || o.orient)
+        if (flipped > 0 || steps.orient)
             notes.push_back("checked against the input re-oriented by the library's orient_soup: " +
                             (flipped < 0 ? std::string("not orientable") : std::to_string(flipped) + " faces flipped"));
     }
-    return input;
+    vi.in_points = std::move(input.points);
+    vi.in_faces = std::move(input.triangles);
+    // A parent naming a dropped or unknown input face maps past the end: verify() reports it.
+    if (!face_of_input.empty())
+        for (uint32_t& p : vi.out_parent) p = p < face_of_input.size() && face_of_input[p] != kNo ? face_of_input[p] : kNo - 1;
+    return notes;
 }
-
-}  // namespace
 
 VerifyReport verify_files(const std::string& in_path, const std::string& out_path, const VerifyFileOptions& options) {
     ReadOptions read;
@@ -49,9 +55,6 @@ VerifyReport verify_files(const std::string& in_path, const std::string& out_pat
 }
 
 VerifyReport verify_files(TriangleSoup input, const std::string& out_path, const VerifyFileOptions& options) {
-    std::vector<uint32_t> face_of_input;
-    std::vector<std::string> notes;
-    input = reference_input(std::move(input), options, face_of_input, notes);
     VerifyInput vi;
     vi.in_points = std::move(input.points);
     vi.in_faces = std::move(input.triangles);
@@ -61,9 +64,7 @@ VerifyReport verify_files(TriangleSoup input, const std::string& out_path, const
         vi.out_faces = std::move(om.faces);
         vi.out_parent = std::move(om.parent);
     }
-    // A parent naming a dropped or unknown input face maps past the end: verify() reports it.
-    if (!face_of_input.empty())
-        for (uint32_t& p : vi.out_parent) p = p < face_of_input.size() && face_of_input[p] != kNo ? face_of_input[p] : kNo - 1;
+    const std::vector<std::string> notes = replay_input_steps(vi, options.steps);
     if (options.indices_path) vi.indices = read_index_file(*options.indices_path);
     if (options.constraints_path) vi.constraints = read_constraints(*options.constraints_path, static_cast<uint32_t>(vi.in_points.size()));
     vi.source = options.source;

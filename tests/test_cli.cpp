@@ -84,12 +84,18 @@ TEST(Cli, InfoExitCodesAndReport) {
     EXPECT_EQ(fixed.code, 0) << fixed.out;
 
     CliRun js = cli("info --json " + q(data("two_components.off")));
-    EXPECT_EQ(js.code, 3) << js.out;
+    EXPECT_EQ(js.code, 0) << js.out;  // several components: one strip each
     auto j = nlohmann::json::parse(js.out);
     EXPECT_EQ(j["components"], 3);
-    EXPECT_EQ(j["valid"], false);
-    ASSERT_FALSE(j["problems"].empty());
-    EXPECT_EQ(j["problems"][0]["kind"], "components");
+    EXPECT_EQ(j["valid"], true);
+    EXPECT_TRUE(j["problems"].empty());
+
+    CliRun dup = cli("info --json " + q(data("duplicate_face.off")));
+    EXPECT_EQ(dup.code, 3) << dup.out;
+    CliRun rep = cli("info --json --repair " + q(data("duplicate_face.off")));
+    EXPECT_EQ(rep.code, 0) << rep.out;
+    const auto rj = nlohmann::json::parse(rep.out.substr(rep.out.find('{')));
+    EXPECT_EQ(rj["repair"]["duplicate_faces"], 1);
 
     CliRun moebius = cli("info --orient --json " + q(data("moebius.off")));
     EXPECT_EQ(moebius.code, 3);
@@ -200,7 +206,7 @@ TEST(Cli, RenderStripsAnInputWithTheEngine) {
 
 TEST(Cli, InvalidInputLeavesNoOutput) {
     Scratch s("noout");
-    for (const char* f : {"moebius.off", "non_manifold_edge.off", "two_components.off", "tetra_one_flipped.off"}) {
+    for (const char* f : {"moebius.off", "non_manifold_edge.off", "repeated_vertex.off", "tetra_one_flipped.off"}) {
         SCOPED_TRACE(f);
         CliRun r = cli("strip " + q(data(f)) + " -o " + q(s / "o.ply") + " --indices " + q(s / "i.txt") + " --report " + q(s / "r.json"));
         EXPECT_EQ(r.code, 3) << r.out;
@@ -250,8 +256,11 @@ TEST(CliReal, FandiskStripsAndVerifies) {
     EXPECT_EQ(nlohmann::json::parse(slurp(s / "f.json"))["input_triangles"], 12946);
     CliRun v = cli("verify " + q(fandisk) + " " + q(s / "f.ply") + " --indices " + q(s / "f.txt"));
     EXPECT_EQ(v.code, 0) << v.out;
-    const std::string broken = singlestrip::test::cgal_mesh_path("blobby_3cc.off");
-    CliRun b = cli("strip " + q(broken) + " -o " + q(s / "b.ply"));
-    EXPECT_EQ(b.code, 3) << b.out;
-    EXPECT_NE(b.out.find("3 edge-connected components"), std::string::npos) << b.out;
+    // Several components: three strips, verified with the index file.
+    const std::string three = singlestrip::test::cgal_mesh_path("blobby_3cc.off");
+    CliRun b = cli("strip " + q(three) + " -o " + q(s / "b.ply") + " --indices " + q(s / "b.txt"));
+    EXPECT_EQ(b.code, 0) << b.out;
+    EXPECT_NE(b.out.find("3 strips"), std::string::npos) << b.out;
+    CliRun bv = cli("verify " + q(three) + " " + q(s / "b.ply") + " --indices " + q(s / "b.txt"));
+    EXPECT_EQ(bv.code, 0) << bv.out;
 }

@@ -97,6 +97,18 @@ struct VerifyReport {
 /// \throw std::bad_alloc only.
 VerifyReport verify(const VerifyInput& input);
 
+/// The input steps a strip run was asked for (`strip --weld / --repair / --orient`).
+struct InputSteps {
+    bool weld = false, repair = false, orient = false;
+};
+
+/// Makes vi.in_points / vi.in_faces the input the strip was built from: the SAME steps replayed
+/// with the library's own weld_soup / repair_soup / orient_soup (repair.hpp, validate.hpp) —
+/// this part of the check depends on the library, not on independent code. vi.out_parent
+/// (input face ids) is mapped to the repaired faces (a dropped face maps out of range, which
+/// verify() reports). Returns notes saying what the replay changed. Complexity: repair_soup().
+std::vector<std::string> replay_input_steps(VerifyInput& vi, const InputSteps& steps);
+
 /// Optional extra files for verify_files().
 struct VerifyFileOptions {
     std::optional<std::string> indices_path;      ///< whitespace-separated GL_TRIANGLE_STRIP indices
@@ -106,11 +118,7 @@ struct VerifyFileOptions {
     std::optional<std::string> cycles_path;  ///< JSON {"cycles": [[face, ...], ...]}
     std::string input_format;                ///< ReadOptions::format for the input mesh
     uint32_t restart_index = 0xffffffffu;    ///< restart value in the indices file
-    /// OUT was made with --weld / --repair / --orient: the reference is the input after the SAME
-    /// step, replayed with the library's own weld_soup / repair_soup / orient_soup (repair.hpp,
-    /// validate.hpp) — this part of the check depends on the library, not on independent code.
-    /// Parents (input face ids) are mapped to the repaired faces; what repair changed is a note.
-    bool weld = false, repair = false, orient = false;
+    InputSteps steps;                        ///< --weld / --repair / --orient of the strip run
 };
 
 /// Reads the input mesh (read_mesh_file), the output mesh (read_output_mesh) and the optional
