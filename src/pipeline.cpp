@@ -7,6 +7,7 @@
 #include "singlestrip/encode.hpp"
 #include "singlestrip/errors.hpp"
 #include "singlestrip/generators.hpp"
+#include "singlestrip/gltf.hpp"
 #include "singlestrip/mesh.hpp"
 #include "singlestrip/validate.hpp"
 #include "components.hpp"
@@ -65,7 +66,7 @@ bool is_builtin_input(const std::string& input) noexcept {
 }
 
 TriangleSoup read_input(const std::string& input, const ReadOptions& options) {
-    if (!is_builtin_input(input)) return read_mesh_file(input, options);
+    if (!is_builtin_input(input)) return is_gltf_path(input) && options.format.empty() ? read_gltf_soup(input) : read_mesh_file(input, options);
     if (input != kBuiltinGenus2) throw RequestError("unknown built-in model '" + input + "' (available: " + kBuiltinGenus2 + ")");
     return make_builtin_model();
 }
@@ -95,7 +96,7 @@ namespace {
 /// Applies weld / repair (options) to `soup`, recording what changed in `r`.
 TriangleSoup pre_repair(TriangleSoup soup, const PipelineOptions& options, PipelineResult& r) {
     if (options.repair) {
-        RepairedSoup rs = repair_soup(soup);
+        RepairedSoup rs = repair_soup(soup, RepairOptions{options.repair_weld});
         r.face_origin = std::move(rs.face_origin);
         r.repair = std::move(rs.report);
         return std::move(rs.soup);

@@ -352,10 +352,13 @@ double signed_volume(const std::vector<Point3>& points, const std::vector<Triang
     return vol / 6.0;
 }
 
-RepairedSoup repair_soup(const TriangleSoup& in) {
+RepairedSoup repair_soup(const TriangleSoup& in, const RepairOptions& options) {
     RepairedSoup out;
     Work w{in.points.size(), in.points, {}, {}, {}, out.report, std::vector<char>(in.points.size(), 0)};
-    keep_faces(in, weld_map(in.points), w);
+    std::vector<uint32_t> weld(in.points.size());
+    std::iota(weld.begin(), weld.end(), 0u);
+    if (options.weld) weld = weld_map(in.points);
+    keep_faces(in, weld, w);
     w.cut.assign(3 * w.tris.size(), 0);
     w.record_non_manifold_edges();
     w.split_fans();

@@ -5,6 +5,7 @@
 #include <utility>
 #include <vector>
 
+#include "singlestrip/gltf.hpp"
 #include "singlestrip/io.hpp"
 #include "singlestrip/repair.hpp"
 #include "singlestrip/validate.hpp"
@@ -51,7 +52,8 @@ std::vector<std::string> replay_input_steps(VerifyInput& vi, const InputSteps& s
 VerifyReport verify_files(const std::string& in_path, const std::string& out_path, const VerifyFileOptions& options) {
     ReadOptions read;
     read.format = options.input_format;
-    return verify_files(read_mesh_file(in_path, read), out_path, options);
+    return verify_files(is_gltf_path(in_path) && read.format.empty() ? read_gltf_soup(in_path) : read_mesh_file(in_path, read), out_path,
+                        options);
 }
 
 VerifyReport verify_files(TriangleSoup input, const std::string& out_path, const VerifyFileOptions& options) {

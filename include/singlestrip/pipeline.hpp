@@ -54,6 +54,8 @@ struct PipelineOptions {
     /// faces, cut non-manifold and non-orientable parts apart, orient). Output parents stay input
     /// face indices; repair's vertex copies follow the input vertices.
     bool repair = false;
+    /// With repair: its weld step (RepairOptions::weld; off for glTF primitives).
+    bool repair_weld = true;
     /// How the strips of several components are joined in `indices`.
     JoinMode join = JoinMode::Degenerate;
     /// The restart index for JoinMode::Restart.

@@ -71,11 +71,16 @@ std::vector<uint32_t> weld_map(const std::vector<Point3>& points);
 /// referenced vertices were merged away. O(V log V + F).
 uint64_t weld_soup(TriangleSoup& soup);
 
-/// Runs steps 1-4 on `soup`. \pre none (any indices, any structure; NaN coordinates never weld).
+struct RepairOptions {
+    /// Step 1. Off for glTF primitives, whose vertices are already split at attribute seams.
+    bool weld = true;
+};
+
+/// Runs steps 1-4 on `soup` (step 1 only with options.weld). \pre none (any indices, any structure; NaN coordinates never weld).
 /// \post the result passes prepare_soup() (validate.hpp) except for "no_faces" when every face
 ///       was dropped. \throw InternalError if a step does not reach its post-condition (a bug).
 /// Complexity O(V log V + F log F).
-RepairedSoup repair_soup(const TriangleSoup& soup);
+RepairedSoup repair_soup(const TriangleSoup& soup, const RepairOptions& options = {});
 
 /// Signed volume of the closed faces `faces` of `points` (sum of tetrahedra to the first vertex
 /// of the first face). O(faces).
