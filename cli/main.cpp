@@ -332,10 +332,10 @@ struct VerifyArgs {
 };
 
 int run_verify(const VerifyArgs& a) {
-    if (ss::is_gltf_path(a.output))
+    if (ss::is_gltf_path(a.output) && ss::is_gltf_path(a.input))
         throw ss::RequestError(a.output +
-                               ": verify reads .ply, .obj or .off results (glTF stores float32 positions, "
-                               "too coarse for the exact checks); write a .ply with the same options to verify");
+                               ": a glTF scene stripped primitive by primitive is not verified; write a .ply from the same "
+                               "input (all its triangle primitives as one mesh) to verify");
     ss::VerifyFileOptions o;
     o.indices_path = a.indices;
     o.constraints_path = a.constraints;

@@ -25,7 +25,26 @@ namespace singlestrip {
 namespace {
 
 constexpr uint32_t kNo = 0xffffffffu;
-constexpr double kRelTol = 1e-9;
+// Relative tolerance of every geometric test: 1e-9, or 1e-5 while verify() checks float32
+// (glTF) positions. A thread-local set by verify() itself keeps the helpers' signatures.
+thread_local double kRelTol = 1e-9;
+// Float32 mode: positions carry rounding of about one float ulp of the coordinates, so every
+// distance test also allows kFloatSlack times the largest coordinate involved.
+thread_local double kFloatSlack = 0;
+
+struct ToleranceScope {
+    explicit ToleranceScope(bool float32) : saved(kRelTol), saved_slack(kFloatSlack) {
+        kRelTol = float32 ? 1e-5 : 1e-9;
+        kFloatSlack = float32 ? 4.0 / (1 << 23) : 0.0;
+    }
+    ~ToleranceScope() {
+        kRelTol = saved;
+        kFloatSlack = saved_slack;
+    }
+    ToleranceScope(const ToleranceScope&) = delete;
+    ToleranceScope& operator=(const ToleranceScope&) = delete;
+    double saved, saved_slack;
+};
 constexpr size_t kMaxPerCheck = 20;  // failure lines kept per check; the rest are counted
 
 // --- tiny vector algebra ------------------------------------------------------------------
@@ -291,6 +310,7 @@ struct ParentFrame {
     /// coordinates divide by |n|^2 and lose about log10(size^2/|n|) digits, and the normal's
     /// direction is noise, so such parents get the robust tests of sliver_contains() instead.
     bool ill = false;
+    double slack = 0;  ///< float32 mode: absolute rounding allowance in these units
 };
 
 ParentFrame frame_of(const std::vector<Point3>& pts, const Triangle& t) {
@@ -315,7 +335,8 @@ ParentFrame frame_of(const std::vector<Point3>& pts, const Triangle& t) {
     double m = 0;
     for (const V3* q : {&p.a, &p.b, &p.c})
         for (double x : *q) m = std::max(m, std::abs(x));
-    p.area_tol = kRelTol * p.size * p.size + 64 * std::numeric_limits<double>::epsilon() * m * p.size;
+    p.slack = kFloatSlack * m;
+    p.area_tol = kRelTol * p.size * p.size + 64 * std::numeric_limits<double>::epsilon() * m * p.size + 8 * p.slack * p.size;
     p.ill = !(std::sqrt(p.n2) > 1e-6 * p.size * p.size);
     return p;
 }
@@ -380,7 +401,9 @@ bool on_segment(const V3& wu, const V3& wv, const V3& wq, double* t_out = nullpt
     const double t = seg_param(u, v, q, dist);
     const double len = norm(sub(v, u));
     if (t_out) *t_out = t;
-    return dist <= kRelTol * len && t >= -kRelTol && t <= 1 + kRelTol;
+    const double slack = kFloatSlack * std::max({std::abs(u[0]), std::abs(u[1]), std::abs(u[2]), std::abs(v[0]), std::abs(v[1]), std::abs(v[2])});
+    const double t_slack = len > 0 ? slack / len : 0.0;
+    return dist <= kRelTol * len + slack && t >= -kRelTol - t_slack && t <= 1 + kRelTol + t_slack;
 }
 
 uint32_t common_vertices(const Triangle& a, const Triangle& b, std::array<uint32_t, 3>& out) {
@@ -806,7 +829,12 @@ std::string VerifyReport::to_string() const {
     return os.str();
 }
 
+std::vector<Triangle> verify_decode_strip(const std::vector<uint32_t>& indices, uint32_t restart_index) {
+    return gl_decode(indices, restart_index);
+}
+
 VerifyReport verify(const VerifyInput& in) {
+    const ToleranceScope tolerance(in.float32);
     VerifyReport report;
     Failures fails(report);
     const size_t n = in.in_points.size();
@@ -829,8 +857,14 @@ VerifyReport verify(const VerifyInput& in) {
         fails.add("vertices",
                   "output has " + std::to_string(in.out_points.size()) + " vertices, fewer than the input's " + std::to_string(n));
     }
+    auto as_stored = [&](const Point3& p) {  // what a float32 file can hold of an input vertex
+        return in.float32 ? Point3{static_cast<float>(p[0]), static_cast<float>(p[1]), static_cast<float>(p[2])} : p;
+    };
+    if (in.float32)
+        report.notes.push_back("float32 positions (glTF): input vertices compared after rounding to float32; geometric tolerances "
+                               "1e-5 relative (instead of 1e-9) plus 4 float32 ulps of the coordinates; parents inferred");
     for (size_t v = 0; v < std::min(n, in.out_points.size()); ++v)
-        if (!(in.out_points[v] == in.in_points[v]))
+        if (!(in.out_points[v] == as_stored(in.in_points[v])))
             fails.add("vertices", "vertex " + std::to_string(v) + " moved (input vertices must be unchanged)");
     for (size_t v = 0; v < in.out_points.size(); ++v)
         for (double c : in.out_points[v])
@@ -910,8 +944,10 @@ VerifyReport verify(const VerifyInput& in) {
         for (const V3& p : {wa, wb, wc}) {
             double dist = 0;
             const auto l = bary(P, p, dist);
-            if (!(dist <= kRelTol * P.size)) in_plane = false;
-            if (!(std::min({l[0], l[1], l[2]}) >= -kRelTol)) inside = false;
+            if (!(dist <= kRelTol * P.size + P.slack)) in_plane = false;
+            // A barycentric l_i below 0 is a distance -l_i * |n| / |edge_i| outside edge i.
+            const double l_slack = P.slack > 0 ? P.slack * P.size / std::sqrt(P.n2) : 0.0;
+            if (!(std::min({l[0], l[1], l[2]}) >= -kRelTol - l_slack)) inside = false;
         }
         if (!in_plane)
             fails.add("geometry", who + ": not in its parent's plane");

@@ -5,6 +5,7 @@
 #include <utility>
 #include <vector>
 
+#include "singlestrip/errors.hpp"
 #include "singlestrip/gltf.hpp"
 #include "singlestrip/io.hpp"
 #include "singlestrip/repair.hpp"
@@ -60,7 +61,14 @@ VerifyReport verify_files(TriangleSoup input, const std::string& out_path, const
     VerifyInput vi;
     vi.in_points = std::move(input.points);
     vi.in_faces = std::move(input.triangles);
-    {
+    if (is_gltf_path(out_path)) {
+        GltfStrip g = read_gltf_strip(out_path);
+        if (g.mode != 5) throw InputError(out_path + ": the first primitive is not a TRIANGLE_STRIP (mode " + std::to_string(g.mode) + ")");
+        vi.out_points = std::move(g.positions);
+        vi.out_faces = verify_decode_strip(g.indices);
+        vi.indices = std::move(g.indices);
+        vi.float32 = true;
+    } else {
         OutputMesh om = read_output_mesh(out_path);
         vi.out_points = std::move(om.points);
         vi.out_faces = std::move(om.faces);

@@ -72,7 +72,13 @@ struct VerifyInput {
     std::optional<uint32_t> target;
     std::optional<std::vector<std::vector<uint32_t>>> cycles;  ///< face-index chains into out_faces
     uint32_t restart_index = 0xffffffffu;                      ///< primitive restart value in `indices`
+    /// out_points are float32 (a glTF output): input vertices are compared after rounding to
+    /// float32 and every geometric tolerance is 1e-5 (relative) instead of 1e-9; a note says so.
+    bool float32 = false;
 };
+
+/// The verifier's own GL_TRIANGLE_STRIP decoder (see "indices" above). O(n).
+std::vector<Triangle> verify_decode_strip(const std::vector<uint32_t>& indices, uint32_t restart_index = 0xffffffffu);
 
 struct VerifyReport {
     std::vector<std::string> failures;  ///< one line per violated property (capped per check)
@@ -121,6 +127,9 @@ struct VerifyFileOptions {
     InputSteps steps;                        ///< --weld / --repair / --orient of the strip run
 };
 
+/// A glTF OUT (.glb/.gltf written by `strip`, one TRIANGLE_STRIP primitive) is read with
+/// read_gltf_strip() (gltf.hpp, tinygltf), its faces decoded by verify_decode_strip(), parents
+/// inferred, and checked with VerifyInput::float32.
 /// Reads the input mesh (read_mesh_file), the output mesh (read_output_mesh) and the optional
 /// files, then runs verify() (after the weld / repair / orient replay asked for). Parents come
 /// from the PLY `parent` property when present, else they are inferred geometrically.
