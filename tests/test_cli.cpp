@@ -264,3 +264,48 @@ TEST(CliReal, FandiskStripsAndVerifies) {
     CliRun bv = cli("verify " + q(three) + " " + q(s / "b.ply") + " --indices " + q(s / "b.txt"));
     EXPECT_EQ(bv.code, 0) << bv.out;
 }
+
+TEST(CliReal, RepairStripsARefusedMeshAndVerifyReplaysIt) {
+    const std::string pig = singlestrip::test::cgal_mesh_path("pig.stl");
+    if (pig.empty()) GTEST_SKIP() << "libcgal-demo data not available";
+    Scratch s("repair");
+    CliRun refused = cli("strip " + q(pig) + " -o " + q(s / "p.ply"));
+    EXPECT_EQ(refused.code, 3) << refused.out;
+    EXPECT_NE(refused.out.find("(fix: --repair"), std::string::npos) << refused.out;
+    CliRun r = cli("strip " + q(pig) + " --repair -o " + q(s / "p.ply") + " --indices " + q(s / "p.txt") + " --join restart --report " +
+                   q(s / "p.json"));
+    ASSERT_EQ(r.code, 0) << r.out;
+    EXPECT_NE(r.out.find("repair: "), std::string::npos) << r.out;
+    const auto j = nlohmann::json::parse(slurp(s / "p.json"));
+    EXPECT_GT(j["repair"]["vertex_copies"].get<int>(), 0);
+    EXPECT_EQ(j["repair"]["elements"]["copied_from"].size(), j["repair"]["vertex_copies"].get<size_t>());
+    EXPECT_EQ(j["strips"].get<size_t>(), j["components"].size());
+    EXPECT_EQ(j["options"]["join"], "restart");
+    CliRun v = cli("verify " + q(pig) + " " + q(s / "p.ply") + " --indices " + q(s / "p.txt") + " --repair");
+    EXPECT_EQ(v.code, 0) << v.out;
+    EXPECT_NE(v.out.find("depends on the library"), std::string::npos) << v.out;
+    CliRun plain = cli("verify " + q(pig) + " " + q(s / "p.ply"));
+    EXPECT_EQ(plain.code, 5) << plain.out;  // against the unrepaired input the check cannot pass
+}
+
+TEST(Cli, UnweldedSoupHintsWeldAndOrientFollowsTheMajority) {
+    Scratch s("weld");
+    // A tetrahedron written as a soup: every face with its own three vertices.
+    std::string off = "OFF\n12 4 0\n";
+    const double P[4][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    const int F[4][3] = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+    for (const auto& f : F)
+        for (int v : f) off += std::to_string(P[v][0]) + " " + std::to_string(P[v][1]) + " " + std::to_string(P[v][2]) + "\n";
+    for (int f = 0; f < 4; ++f) off += "3 " + std::to_string(3 * f) + " " + std::to_string(3 * f + 1) + " " + std::to_string(3 * f + 2) + "\n";
+    {
+        std::ofstream(s / "soup.off") << off;
+    }
+    CliRun r = cli("strip " + q(s / "soup.off") + " -o " + q(s / "o.ply"));
+    EXPECT_EQ(r.code, 0) << r.out;
+    EXPECT_NE(r.out.find("4 strips"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("--weld"), std::string::npos) << r.out;
+    CliRun w = cli("strip " + q(s / "soup.off") + " --weld -o " + q(s / "o.ply"));
+    EXPECT_EQ(w.code, 0) << w.out;
+    EXPECT_NE(w.out.find("1 strip of"), std::string::npos) << w.out;
+    EXPECT_EQ(cli("verify " + q(s / "soup.off") + " " + q(s / "o.ply") + " --weld").code, 0);
+}
