@@ -193,7 +193,7 @@ def test_malformed_arrays(vertices, faces, pattern):
         ss.strip(vertices, faces)
 
 
-STRUCTURAL = ["non_manifold_edge.off", "tetra_one_flipped.off", "two_components.off", "repeated_vertex.off",
+STRUCTURAL = ["non_manifold_edge.off", "tetra_one_flipped.off", "repeated_vertex.off",
               "duplicate_face.off", "moebius.off", "non_manifold_vertex.off"]
 
 
@@ -238,3 +238,13 @@ def test_unknown_engine_raises_value_error():
     v, f = grid(3)
     with pytest.raises(ValueError, match=r"unknown engine 'fast' \(choices: matching, growth\)"):
         ss.strip(v, f, engine="fast")
+
+
+@pytest.mark.parametrize("name", STRUCTURAL + ["two_components.off"])
+def test_repair_strips_every_broken_file_and_verifies(name):
+    v, f = read_off(os.path.join(DATA, name))
+    r = ss.strip(v, f, repair=True, join="restart")
+    assert "repair" in r["report"]
+    check = ss.verify(v, f, r, repair=True)
+    assert check["ok"], check["text"]
+    assert check["strips"] == r["report"]["strips"]
