@@ -112,7 +112,8 @@ void check_requests(const TriangleSoup& s, const StripOptions& o) {
     if (o.seed_face && o.source) {
         const Triangle& t = s.triangles[*o.seed_face];
         if (t[0] != *o.source && t[1] != *o.source && t[2] != *o.source)
-            throw RequestError("seed face " + std::to_string(*o.seed_face) + " is not incident to source vertex " + std::to_string(*o.source));
+            throw RequestError("seed face " + std::to_string(*o.seed_face) + " is not incident to source vertex " +
+                               std::to_string(*o.source));
     }
     std::unordered_set<uint64_t> edges;
     for (const Triangle& t : s.triangles)
@@ -202,7 +203,8 @@ void strip_components(PipelineResult& r, const std::vector<uint32_t>& comp, uint
         strips.push_back(encode_triangle_strip(faces));
         const StripStats& st = res.stats;
         add_stats(r.strip.stats, st);
-        r.components.push_back({st.input_triangles, st.output_triangles, st.splits, st.genus, st.boundary_loops, first, strips.back().size()});
+        r.components.push_back(
+            {st.input_triangles, st.output_triangles, st.splits, st.genus, st.boundary_loops, first, strips.back().size()});
         if (r.options.cycles) {
             if (stage) *stage = PipelineStage::Cycles;
             Cycles part = compute_fundamental_cycles(res);

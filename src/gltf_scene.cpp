@@ -4,9 +4,9 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
-#include <limits>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <map>
 #include <sstream>
 #include <string>
@@ -75,7 +75,8 @@ struct Source {
 };
 
 std::array<double, 3> barycentric(const Point3& p, const Point3& a, const Point3& b, const Point3& c) {
-    const Point3 u{b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v{c[0] - a[0], c[1] - a[1], c[2] - a[2]}, q{p[0] - a[0], p[1] - a[1], p[2] - a[2]};
+    const Point3 u{b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v{c[0] - a[0], c[1] - a[1], c[2] - a[2]},
+        q{p[0] - a[0], p[1] - a[1], p[2] - a[2]};
     auto dot = [](const Point3& x, const Point3& y) { return x[0] * y[0] + x[1] * y[1] + x[2] * y[2]; };
     const double uu = dot(u, u), uv = dot(u, v), vv = dot(v, v), qu = dot(q, u), qv = dot(q, v), det = uu * vv - uv * uv;
     if (!(std::abs(det) > 0)) return {1, 0, 0};
@@ -119,8 +120,9 @@ int write_attribute(tinygltf::Model& model, const std::string& name, const Acces
     if (!interpolated(name, d)) {
         acc.componentType = d.component_type;
         acc.normalized = d.normalized;
-        for (const Source& s : src) bytes.insert(bytes.end(), d.raw.begin() + static_cast<std::ptrdiff_t>(s.nearest * d.elem_size),
-                                                 d.raw.begin() + static_cast<std::ptrdiff_t>((s.nearest + 1) * d.elem_size));
+        for (const Source& s : src)
+            bytes.insert(bytes.end(), d.raw.begin() + static_cast<std::ptrdiff_t>(s.nearest * d.elem_size),
+                         d.raw.begin() + static_cast<std::ptrdiff_t>((s.nearest + 1) * d.elem_size));
     } else {
         acc.componentType = TINYGLTF_COMPONENT_TYPE_FLOAT;
         const auto k = static_cast<std::size_t>(d.components);
@@ -214,7 +216,8 @@ std::string why_kept(const tinygltf::Primitive& prim) {
     return {};
 }
 
-GltfPrimitiveResult strip_primitive(tinygltf::Model& model, tinygltf::Primitive& prim, const PipelineOptions& base, const std::string& name) {
+GltfPrimitiveResult strip_primitive(tinygltf::Model& model, tinygltf::Primitive& prim, const PipelineOptions& base,
+                                    const std::string& name) {
     GltfPrimitiveResult res;
     std::map<std::string, AccessorData> attrs;
     for (const auto& [attr, index] : prim.attributes) attrs.emplace(attr, gltf_detail::read_accessor(model, index, name));
@@ -257,7 +260,8 @@ GltfPrimitiveResult strip_primitive(tinygltf::Model& model, tinygltf::Primitive&
 }  // namespace
 
 std::vector<GltfPrimitiveResult> strip_gltf_file(const std::string& in_path, const std::string& out_path, const PipelineOptions& options) {
-    if (!is_gltf_path(out_path)) throw RequestError(out_path + ": glTF input is written as glTF: the output needs the extension .glb or .gltf");
+    if (!is_gltf_path(out_path))
+        throw RequestError(out_path + ": glTF input is written as glTF: the output needs the extension .glb or .gltf");
     tinygltf::Model model = gltf_detail::load_model(in_path);
     merge_buffers(model);
     images_to_buffer(model);

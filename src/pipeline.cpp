@@ -4,13 +4,13 @@
 #include <chrono>
 #include <utility>
 
+#include "components.hpp"
 #include "singlestrip/encode.hpp"
 #include "singlestrip/errors.hpp"
 #include "singlestrip/generators.hpp"
 #include "singlestrip/gltf.hpp"
 #include "singlestrip/mesh.hpp"
 #include "singlestrip/validate.hpp"
-#include "components.hpp"
 
 namespace singlestrip {
 namespace {
@@ -66,7 +66,8 @@ bool is_builtin_input(const std::string& input) noexcept {
 }
 
 TriangleSoup read_input(const std::string& input, const ReadOptions& options) {
-    if (!is_builtin_input(input)) return is_gltf_path(input) && options.format.empty() ? read_gltf_soup(input) : read_mesh_file(input, options);
+    if (!is_builtin_input(input))
+        return is_gltf_path(input) && options.format.empty() ? read_gltf_soup(input) : read_mesh_file(input, options);
     if (input != kBuiltinGenus2) throw RequestError("unknown built-in model '" + input + "' (available: " + kBuiltinGenus2 + ")");
     return make_builtin_model();
 }
@@ -110,7 +111,8 @@ void warn_unwelded(PipelineResult& r, uint32_t components) {
     if (components < 2 || r.options.weld || r.options.repair) return;
     const uint64_t u = unwelded_vertices(r.input);
     if (u == 0) return;
-    r.warnings.push_back(std::to_string(u) + " vertices have exactly the coordinates of another vertex (the file left its corners apart): the " +
+    r.warnings.push_back(std::to_string(u) +
+                         " vertices have exactly the coordinates of another vertex (the file left its corners apart): the " +
                          std::to_string(components) + " components may be one surface; --weld (or --repair) merges them");
 }
 

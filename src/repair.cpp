@@ -39,8 +39,12 @@ struct EdgeGroups {
     std::vector<uint32_t> start;
 };
 
-uint32_t from(const std::vector<Triangle>& t, uint32_t h) { return t[h / 3][h % 3]; }
-uint32_t to(const std::vector<Triangle>& t, uint32_t h) { return t[h / 3][(h % 3 + 1) % 3]; }
+uint32_t from(const std::vector<Triangle>& t, uint32_t h) {
+    return t[h / 3][h % 3];
+}
+uint32_t to(const std::vector<Triangle>& t, uint32_t h) {
+    return t[h / 3][(h % 3 + 1) % 3];
+}
 
 EdgeGroups group_edges(const std::vector<Triangle>& t) {
     std::vector<std::pair<uint64_t, uint32_t>> keys;
@@ -61,7 +65,9 @@ EdgeGroups group_edges(const std::vector<Triangle>& t) {
 }
 
 /// The corner of face h/3 at vertex v (v is an end of half-edge h).
-uint32_t corner_at(const std::vector<Triangle>& t, uint32_t h, uint32_t v) { return from(t, h) == v ? h : 3 * (h / 3) + (h % 3 + 1) % 3; }
+uint32_t corner_at(const std::vector<Triangle>& t, uint32_t h, uint32_t v) {
+    return from(t, h) == v ? h : 3 * (h / 3) + (h % 3 + 1) % 3;
+}
 
 /// The input vertex a (possibly copied) vertex stands for.
 uint32_t input_vertex(uint32_t v, std::size_t n, const std::vector<uint32_t>& copied_from) {

@@ -105,7 +105,9 @@ void add_outcome(json& j, const RunOutcome& o) {
 
 }  // namespace
 
-std::string repair_json(const RepairReport& report) { return repair_json_value(report).dump(2) + "\n"; }
+std::string repair_json(const RepairReport& report) {
+    return repair_json_value(report).dump(2) + "\n";
+}
 
 std::string report_json(const ReportInput& in) {
     const PipelineOptions* options = in.options ? in.options : in.result ? &in.result->options : nullptr;

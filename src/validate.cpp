@@ -36,7 +36,9 @@ struct UnionFind {
     }
 };
 
-std::string edge_name(uint32_t a, uint32_t b) { return "edge (" + std::to_string(a) + ", " + std::to_string(b) + ")"; }
+std::string edge_name(uint32_t a, uint32_t b) {
+    return "edge (" + std::to_string(a) + ", " + std::to_string(b) + ")";
+}
 
 /// Collects problems of one kind, keeping the first kMaxPerKind messages.
 struct ProblemList {
@@ -59,13 +61,12 @@ struct ProblemList {
 struct Analysis {
     const TriangleSoup& soup;
     std::size_t nf = 0, nv = 0;
-    std::vector<char> usable;        // face in range and with three distinct vertices
-    std::vector<uint32_t> twin;      // half-edge 3f+k -> its partner on a 2-face edge, else kNo
-    std::vector<uint32_t> comp;      // edge-connected component root per usable face
-    std::vector<int8_t> flip;        // orientation BFS result (1 = flip to be consistent)
-    ProblemList out_of_range{"index_out_of_range"}, repeated{"repeated_vertex"}, duplicate{"duplicate_face"},
-        nm_edge{"non_manifold_edge"}, nm_vertex{"non_manifold_vertex"}, inconsistent{"inconsistent_orientation"},
-        non_orientable{"non_orientable"};
+    std::vector<char> usable;    // face in range and with three distinct vertices
+    std::vector<uint32_t> twin;  // half-edge 3f+k -> its partner on a 2-face edge, else kNo
+    std::vector<uint32_t> comp;  // edge-connected component root per usable face
+    std::vector<int8_t> flip;    // orientation BFS result (1 = flip to be consistent)
+    ProblemList out_of_range{"index_out_of_range"}, repeated{"repeated_vertex"}, duplicate{"duplicate_face"}, nm_edge{"non_manifold_edge"},
+        nm_vertex{"non_manifold_vertex"}, inconsistent{"inconsistent_orientation"}, non_orientable{"non_orientable"};
     uint64_t edges = 0, boundary_edges = 0, non_manifold_edges = 0, referenced = 0, boundary_loops = 0;
     std::vector<uint64_t> component_sizes;
     bool orientable = true, oriented = true;
@@ -217,8 +218,8 @@ struct Analysis {
             if (j - i > 1) {
                 std::string faces;
                 for (std::size_t k = i; k < j; ++k) faces += (k > i ? ", " : "") + std::to_string(by_third[k].second);
-                duplicate.add("faces " + faces + " are duplicates (same vertices " + std::to_string(lo) + ", " + std::to_string(hi) +
-                              ", " + std::to_string(by_third[i].first) + ")");
+                duplicate.add("faces " + faces + " are duplicates (same vertices " + std::to_string(lo) + ", " + std::to_string(hi) + ", " +
+                              std::to_string(by_third[i].first) + ")");
             }
             i = j;
         }
@@ -289,7 +290,8 @@ struct Analysis {
 
     std::size_t total_problems() const {
         std::size_t n = nf == 0 ? 1 : 0;
-        for (const ProblemList* l : {&out_of_range, &repeated, &duplicate, &nm_edge, &nm_vertex, &inconsistent, &non_orientable}) n += l->total;
+        for (const ProblemList* l : {&out_of_range, &repeated, &duplicate, &nm_edge, &nm_vertex, &inconsistent, &non_orientable})
+            n += l->total;
         return n;
     }
 
@@ -360,7 +362,9 @@ long long apply_flips(TriangleSoup& soup, const std::vector<int8_t>& flip) {
 
 }  // namespace
 
-std::vector<SoupProblem> diagnose_soup(const TriangleSoup& soup) { return Analysis(soup).problems(); }
+std::vector<SoupProblem> diagnose_soup(const TriangleSoup& soup) {
+    return Analysis(soup).problems();
+}
 
 void validate_soup(const TriangleSoup& soup, const std::string& filename_for_messages) {
     Analysis a(soup);
@@ -447,7 +451,8 @@ MeshInfo mesh_info(const TriangleSoup& soup) {
     info.genus_valid = a.orientable && a.non_manifold_edges == 0 && a.nm_vertex.total == 0 && info.components >= 1 &&
                        a.out_of_range.total == 0 && a.repeated.total == 0;
     if (info.genus_valid)
-        info.genus = (2 * static_cast<long long>(info.components) - info.euler_characteristic - static_cast<long long>(info.boundary_loops)) / 2;
+        info.genus =
+            (2 * static_cast<long long>(info.components) - info.euler_characteristic - static_cast<long long>(info.boundary_loops)) / 2;
     return info;
 }
 

@@ -401,7 +401,8 @@ bool on_segment(const V3& wu, const V3& wv, const V3& wq, double* t_out = nullpt
     const double t = seg_param(u, v, q, dist);
     const double len = norm(sub(v, u));
     if (t_out) *t_out = t;
-    const double slack = kFloatSlack * std::max({std::abs(u[0]), std::abs(u[1]), std::abs(u[2]), std::abs(v[0]), std::abs(v[1]), std::abs(v[2])});
+    const double slack =
+        kFloatSlack * std::max({std::abs(u[0]), std::abs(u[1]), std::abs(u[2]), std::abs(v[0]), std::abs(v[1]), std::abs(v[2])});
     const double t_slack = len > 0 ? slack / len : 0.0;
     return dist <= kRelTol * len + slack && t >= -kRelTol - t_slack && t <= 1 + kRelTol + t_slack;
 }
@@ -861,8 +862,9 @@ VerifyReport verify(const VerifyInput& in) {
         return in.float32 ? Point3{static_cast<float>(p[0]), static_cast<float>(p[1]), static_cast<float>(p[2])} : p;
     };
     if (in.float32)
-        report.notes.push_back("float32 positions (glTF): input vertices compared after rounding to float32; geometric tolerances "
-                               "1e-5 relative (instead of 1e-9) plus 4 float32 ulps of the coordinates; parents inferred");
+        report.notes.push_back(
+            "float32 positions (glTF): input vertices compared after rounding to float32; geometric tolerances "
+            "1e-5 relative (instead of 1e-9) plus 4 float32 ulps of the coordinates; parents inferred");
     for (size_t v = 0; v < std::min(n, in.out_points.size()); ++v)
         if (!(in.out_points[v] == as_stored(in.in_points[v])))
             fails.add("vertices", "vertex " + std::to_string(v) + " moved (input vertices must be unchanged)");
@@ -1083,8 +1085,9 @@ VerifyReport verify(const VerifyInput& in) {
             if (comp[f + 1] != comp[f]) {
                 strip_end.push_back(f);
                 if (seen[comp[f + 1]])
-                    fails.add("strip", "face " + std::to_string(f + 1) + " returns to an edge-connected component already stripped "
-                                                                         "(each component must be one contiguous strip)");
+                    fails.add("strip", "face " + std::to_string(f + 1) +
+                                           " returns to an edge-connected component already stripped "
+                                           "(each component must be one contiguous strip)");
                 seen[comp[f + 1]] = true;
                 continue;
             }

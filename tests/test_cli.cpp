@@ -296,10 +296,9 @@ TEST(Cli, UnweldedSoupHintsWeldAndOrientFollowsTheMajority) {
     const int F[4][3] = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
     for (const auto& f : F)
         for (int v : f) off += std::to_string(P[v][0]) + " " + std::to_string(P[v][1]) + " " + std::to_string(P[v][2]) + "\n";
-    for (int f = 0; f < 4; ++f) off += "3 " + std::to_string(3 * f) + " " + std::to_string(3 * f + 1) + " " + std::to_string(3 * f + 2) + "\n";
-    {
-        std::ofstream(s / "soup.off") << off;
-    }
+    for (int f = 0; f < 4; ++f)
+        off += "3 " + std::to_string(3 * f) + " " + std::to_string(3 * f + 1) + " " + std::to_string(3 * f + 2) + "\n";
+    { std::ofstream(s / "soup.off") << off; }
     CliRun r = cli("strip " + q(s / "soup.off") + " -o " + q(s / "o.ply"));
     EXPECT_EQ(r.code, 0) << r.out;
     EXPECT_NE(r.out.find("4 strips"), std::string::npos) << r.out;

@@ -312,7 +312,7 @@ tinygltf::Model load_any(const std::string& path) {
         [](tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) { return true; }, nullptr);
     std::string err, warn;
     const bool ok = path.size() > 4 && path.substr(path.size() - 4) == ".glb" ? loader.LoadBinaryFromFile(&m, &err, &warn, path)
-                                                                               : loader.LoadASCIIFromFile(&m, &err, &warn, path);
+                                                                              : loader.LoadASCIIFromFile(&m, &err, &warn, path);
     EXPECT_TRUE(ok) << err;
     return m;
 }

@@ -21,9 +21,13 @@ using namespace singlestrip;
 
 namespace {
 
-std::string data(const std::string& name) { return std::string(SINGLESTRIP_SOURCE_DIR) + "/tests/data/" + name; }
+std::string data(const std::string& name) {
+    return std::string(SINGLESTRIP_SOURCE_DIR) + "/tests/data/" + name;
+}
 
-void flip(TriangleSoup& s, size_t f) { std::swap(s.triangles[f][1], s.triangles[f][2]); }
+void flip(TriangleSoup& s, size_t f) {
+    std::swap(s.triangles[f][1], s.triangles[f][2]);
+}
 
 /// Strips `soup` with `o` and verifies the result (arrays, parents, indices) against the input
 /// replayed through the same steps.
@@ -85,9 +89,9 @@ TEST(Repair, EachBrokenTestFileStripsWithRepairAndVerifies) {
 TEST(Repair, DropsDegenerateAndDuplicateFacesKeepingTheFirst) {
     TriangleSoup s = make_icosphere(1);
     const auto n = static_cast<uint32_t>(s.triangles.size());
-    s.triangles.push_back(s.triangles[3]);                                          // same face again
+    s.triangles.push_back(s.triangles[3]);                                             // same face again
     s.triangles.push_back({s.triangles[5][0], s.triangles[5][2], s.triangles[5][1]});  // reversed copy
-    s.triangles.push_back({0, 0, 1});                                               // repeated vertex
+    s.triangles.push_back({0, 0, 1});                                                  // repeated vertex
     const RepairedSoup r = repair_soup(s);
     EXPECT_EQ(r.report.duplicate_faces, (std::vector<uint32_t>{n, n + 1}));
     EXPECT_EQ(r.report.degenerate_faces, (std::vector<uint32_t>{n + 2}));
@@ -184,8 +188,9 @@ TEST(Components, OneStripPerComponentWithEitherJoin) {
         EXPECT_TRUE(rep.ok()) << rep.to_string();
         EXPECT_EQ(rep.strips, 3u);
         ASSERT_EQ(r.components.size(), 3u);
-        EXPECT_EQ(canonical(decode_triangle_strip(r.indices, join == JoinMode::Restart ? std::optional<uint32_t>(0xffffffffu) : std::nullopt)),
-                  canonical(r.arrays.faces));
+        EXPECT_EQ(
+            canonical(decode_triangle_strip(r.indices, join == JoinMode::Restart ? std::optional<uint32_t>(0xffffffffu) : std::nullopt)),
+            canonical(r.arrays.faces));
         EXPECT_EQ(canonical(decode_triangle_strip(degenerate_joined_indices(r))), canonical(r.arrays.faces));
         const auto restarts = std::count(r.indices.begin(), r.indices.end(), 0xffffffffu);
         EXPECT_EQ(restarts, join == JoinMode::Restart ? 2 : 0);

@@ -42,6 +42,8 @@ std::optional<JoinMode> parse_join_mode(std::string_view name) noexcept;
 std::vector<uint32_t> join_strips(const std::vector<std::vector<uint32_t>>& strips, JoinMode mode, uint32_t restart = 0xffffffffu);
 
 /// Upper bound on encode_triangle_strip(faces).size(): 3 * faces.size() (meshoptimizer style).
-inline size_t triangle_strip_bound(size_t face_count) { return face_count == 0 ? 0 : 3 * face_count; }
+inline size_t triangle_strip_bound(size_t face_count) {
+    return face_count == 0 ? 0 : 3 * face_count;
+}
 
 }  // namespace singlestrip

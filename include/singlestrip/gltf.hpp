@@ -74,16 +74,15 @@ struct GltfPrimitiveResult {
 /// \throw InputError as read_gltf_soup() or stripify() (naming mesh and primitive); RequestError
 /// for an output that is not .glb/.gltf; OutputError when it cannot be written.
 /// Complexity: stripify() per primitive plus O(file size).
-std::vector<GltfPrimitiveResult> strip_gltf_file(const std::string& in_path, const std::string& out_path,
-                                                 const PipelineOptions& options);
+std::vector<GltfPrimitiveResult> strip_gltf_file(const std::string& in_path, const std::string& out_path, const PipelineOptions& options);
 
 /// What read_gltf_strip() found in the first primitive of the first mesh.
 struct GltfStrip {
-    int mode = -1;                   ///< glTF primitive mode (5 = TRIANGLE_STRIP)
-    int index_component_type = 0;    ///< 5123 (UNSIGNED_SHORT) or 5125 (UNSIGNED_INT)
+    int mode = -1;                 ///< glTF primitive mode (5 = TRIANGLE_STRIP)
+    int index_component_type = 0;  ///< 5123 (UNSIGNED_SHORT) or 5125 (UNSIGNED_INT)
     std::vector<uint32_t> indices;
-    std::vector<Point3> positions;   ///< float values widened to double
-    std::vector<Point3> normals;     ///< empty when the primitive has no NORMAL
+    std::vector<Point3> positions;  ///< float values widened to double
+    std::vector<Point3> normals;    ///< empty when the primitive has no NORMAL
 };
 
 /// Reads back a .glb/.gltf written by write_gltf_strip() (tightly packed float VEC3 attributes,

@@ -83,22 +83,22 @@ struct ComponentStrip {
     uint32_t input_triangles = 0, output_triangles = 0, splits = 0;
     long long genus = 0;
     uint32_t boundary_loops = 0;
-    size_t first_face = 0;   ///< its faces are arrays.faces[first_face, first_face + output_triangles)
+    size_t first_face = 0;     ///< its faces are arrays.faces[first_face, first_face + output_triangles)
     size_t strip_indices = 0;  ///< length of its own GL_TRIANGLE_STRIP encoding (before joining)
 };
 
 struct PipelineResult {
-    TriangleSoup input;             ///< the soup after repair and checks (re-oriented if asked)
-    PipelineOptions options;        ///< as run: constraint_edges include the file's pairs
+    TriangleSoup input;       ///< the soup after repair and checks (re-oriented if asked)
+    PipelineOptions options;  ///< as run: constraint_edges include the file's pairs
     /// One component: the split mesh, strip order, stats (stats.engine). Several: `stats` holds
     /// the totals (genus and boundary loops summed), mesh and order are empty (see `components`).
     StripResult strip;
-    StripArrays arrays;             ///< output in strip order; parent = face of the soup given to stripify()
-    std::vector<uint32_t> indices;  ///< shortest GL_TRIANGLE_STRIP encoding per strip, joined (options.join)
+    StripArrays arrays;                      ///< output in strip order; parent = face of the soup given to stripify()
+    std::vector<uint32_t> indices;           ///< shortest GL_TRIANGLE_STRIP encoding per strip, joined (options.join)
     std::vector<ComponentStrip> components;  ///< one per strip, in output order
-    std::optional<Cycles> cycles;   ///< when options.cycles (face indices into arrays.faces)
-    std::optional<RepairReport> repair;  ///< when options.repair
-    uint64_t welded = 0;                 ///< options.weld: vertices merged
+    std::optional<Cycles> cycles;            ///< when options.cycles (face indices into arrays.faces)
+    std::optional<RepairReport> repair;      ///< when options.repair
+    uint64_t welded = 0;                     ///< options.weld: vertices merged
     /// input face (of the soup given to stripify()) of each face of `input`; empty = identity.
     std::vector<uint32_t> face_origin;
     std::vector<std::string> warnings;  ///< e.g. many components that --weld would join

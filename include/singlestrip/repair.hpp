@@ -38,14 +38,14 @@ namespace singlestrip {
 /// What repair_soup() changed. Vertex ids are input ids (after welding: the kept vertex), face
 /// ids are input face ids.
 struct RepairReport {
-    std::vector<std::pair<uint32_t, uint32_t>> welded;            ///< (vertex, merged into); referenced ones only
-    std::vector<uint32_t> invalid_faces;                          ///< dropped: an index out of range
-    std::vector<uint32_t> degenerate_faces;                       ///< dropped: a repeated vertex (after welding)
-    std::vector<uint32_t> duplicate_faces;                        ///< dropped: same vertices as an earlier face
+    std::vector<std::pair<uint32_t, uint32_t>> welded;              ///< (vertex, merged into); referenced ones only
+    std::vector<uint32_t> invalid_faces;                            ///< dropped: an index out of range
+    std::vector<uint32_t> degenerate_faces;                         ///< dropped: a repeated vertex (after welding)
+    std::vector<uint32_t> duplicate_faces;                          ///< dropped: same vertices as an earlier face
     std::vector<std::pair<uint32_t, uint32_t>> non_manifold_edges;  ///< edges with more than two faces, cut apart
-    std::vector<uint32_t> split_vertices;                         ///< vertices given copies (non-manifold or cut)
-    std::vector<uint32_t> copied_from;                            ///< new vertex n + j copies vertex copied_from[j]
-    std::vector<std::pair<uint32_t, uint32_t>> orientation_cuts;  ///< edges cut to make a component orientable
+    std::vector<uint32_t> split_vertices;                           ///< vertices given copies (non-manifold or cut)
+    std::vector<uint32_t> copied_from;                              ///< new vertex n + j copies vertex copied_from[j]
+    std::vector<std::pair<uint32_t, uint32_t>> orientation_cuts;    ///< edges cut to make a component orientable
     uint32_t non_orientable_components = 0;
     std::vector<uint32_t> flipped_faces;  ///< faces whose winding was reversed
     uint32_t turned_outward = 0;          ///< closed components reversed to get positive volume
@@ -58,7 +58,7 @@ struct RepairReport {
 };
 
 struct RepairedSoup {
-    TriangleSoup soup;                 ///< repaired: input points + copies, kept faces in input order
+    TriangleSoup soup;                  ///< repaired: input points + copies, kept faces in input order
     std::vector<uint32_t> face_origin;  ///< input face of each face of `soup`
     RepairReport report;
 };

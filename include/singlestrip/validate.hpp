@@ -52,7 +52,8 @@ TriangleSoup prepare_soup(TriangleSoup soup, const PrepareOptions& opt, const st
 /// gives (a,c,b)): never more than half of a component's faces are flipped. Faces that are out of
 /// range or repeat a vertex are left alone; orientation propagates only across edges with
 /// exactly two faces. Returns the number of faces flipped, or -1 (soup unchanged) if some
-/// component is not orientable. Complexity O(V + F log F) worst case (union-find with path halving; no sort of the whole soup), linear in practice.
+/// component is not orientable. Complexity O(V + F log F) worst case (union-find with path halving; no sort of the whole soup), linear in
+/// practice.
 long long orient_soup(TriangleSoup& soup);
 
 /// Throws like prepare_soup() without re-orienting; convenience for callers with a soup.
@@ -60,22 +61,22 @@ void validate_soup(const TriangleSoup& soup, const std::string& filename_for_mes
 
 /// Topological summary of a soup, computed on the soup itself (valid or not).
 struct MeshInfo {
-    uint64_t vertices = 0;             ///< all vertices in the file
-    uint64_t referenced_vertices = 0;  ///< vertices used by at least one face
-    uint64_t faces = 0;                ///< triangles after fan triangulation
-    uint64_t polygons = 0;             ///< file polygons (== faces if all were triangles)
-    uint64_t edges = 0;                ///< distinct undirected edges
-    uint64_t boundary_edges = 0;       ///< edges with exactly one face
-    uint64_t non_manifold_edges = 0;   ///< edges with more than two faces
-    uint64_t components = 0;           ///< edge-connected components of faces
-    uint64_t boundary_loops = 0;       ///< closed loops of boundary edges (meaningful if manifold)
-    long long euler_characteristic = 0;///< V(referenced) - E + F
+    uint64_t vertices = 0;               ///< all vertices in the file
+    uint64_t referenced_vertices = 0;    ///< vertices used by at least one face
+    uint64_t faces = 0;                  ///< triangles after fan triangulation
+    uint64_t polygons = 0;               ///< file polygons (== faces if all were triangles)
+    uint64_t edges = 0;                  ///< distinct undirected edges
+    uint64_t boundary_edges = 0;         ///< edges with exactly one face
+    uint64_t non_manifold_edges = 0;     ///< edges with more than two faces
+    uint64_t components = 0;             ///< edge-connected components of faces
+    uint64_t boundary_loops = 0;         ///< closed loops of boundary edges (meaningful if manifold)
+    long long euler_characteristic = 0;  ///< V(referenced) - E + F
     /// (2*components - chi - boundary_loops)/2 summed as for one surface; only meaningful for a
     /// valid (connected, manifold, orientable) mesh — `genus_valid` says so.
     long long genus = 0;
     bool genus_valid = false;
-    bool orientable = false;  ///< every component can be oriented consistently (manifold edges)
-    bool oriented = false;    ///< ... and already is
+    bool orientable = false;                ///< every component can be oriented consistently (manifold edges)
+    bool oriented = false;                  ///< ... and already is
     std::vector<uint64_t> component_sizes;  ///< faces per component, largest first
     std::vector<SoupProblem> problems;      ///< diagnose_soup(soup)
     uint64_t unwelded_vertices = 0;         ///< unwelded_vertices(soup): --weld would merge them

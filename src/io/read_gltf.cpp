@@ -161,8 +161,7 @@ TriangleSoup read_gltf_soup(const std::string& path) {
             for (Triangle t : primitive_triangles(model, prim, pts.size(), path))
                 soup.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
         }
-    if (soup.triangles.empty())
-        throw InputError(path + ": no faces (no mesh primitive in mode TRIANGLES (4) with a POSITION attribute)");
+    if (soup.triangles.empty()) throw InputError(path + ": no faces (no mesh primitive in mode TRIANGLES (4) with a POSITION attribute)");
     return soup;
 }
 
