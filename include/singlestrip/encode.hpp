@@ -46,4 +46,10 @@ inline size_t triangle_strip_bound(size_t face_count) {
     return face_count == 0 ? 0 : 3 * face_count;
 }
 
+/// Upper bound on join_strips() of `strips` strips holding `face_count` faces in all: each strip
+/// within its own bound, plus at most 3 indices per join.
+inline size_t joined_strip_bound(size_t face_count, size_t strips) {
+    return triangle_strip_bound(face_count) + (strips > 1 ? 3 * (strips - 1) : 0);
+}
+
 }  // namespace singlestrip
