@@ -266,6 +266,11 @@ void print_summary(const std::string& input, const ss::PipelineResult& r) {
 
 /// glTF in and out: every triangle primitive stripped, the rest of the scene kept (gltf.hpp).
 int run_strip_gltf(const StripArgs& a) {
+    if (a.indices || a.cycles || a.cycles_obj || a.constraints || a.source || a.target || a.seed_face)
+        throw ss::RequestError(a.input +
+                               ": a glTF scene is stripped primitive by primitive (vertex and face numbers are per primitive): "
+                               "--indices, --cycles, --cycles-obj, --constraints, --source, --target and --seed-face need a "
+                               ".ply/.obj/.off output (all triangle primitives as one mesh)");
     const auto prims = ss::strip_gltf_file(a.input, a.output, pipeline_options(a));
     json rep = {{"input", a.input}, {"output", a.output}, {"primitives", json::array()}};
     for (const auto& p : prims) {

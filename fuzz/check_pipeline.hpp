@@ -57,7 +57,7 @@ inline std::string check_soup(const TriangleSoup& s) {
 struct Request {
     bool orient = false;
     StripOptions strip;
-    bool cycles = true;  ///< run compute_fundamental_cycles and tree_cotree_cycles
+    bool cycles = true;   ///< run compute_fundamental_cycles and tree_cotree_cycles
     bool repair = false;  ///< PipelineOptions::repair (then only "no faces" may be refused)
 };
 

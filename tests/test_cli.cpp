@@ -308,3 +308,21 @@ TEST(Cli, UnweldedSoupHintsWeldAndOrientFollowsTheMajority) {
     EXPECT_NE(w.out.find("1 strip of"), std::string::npos) << w.out;
     EXPECT_EQ(cli("verify " + q(s / "soup.off") + " " + q(s / "o.ply") + " --weld").code, 0);
 }
+
+TEST(Cli, GltfSceneInAndOut) {
+    Scratch s("gltfin");
+    const std::string scene = data("scene.gltf");
+    CliRun r = cli("strip " + q(scene) + " -o " + q(s / "o.glb") + " --report " + q(s / "r.json"));
+    ASSERT_EQ(r.code, 0) << r.out;
+    EXPECT_NE(r.out.find("mesh 2 primitive 0: kept as it was"), std::string::npos) << r.out;
+    const auto j = nlohmann::json::parse(slurp(s / "r.json"));
+    ASSERT_EQ(j["primitives"].size(), 4u);
+    EXPECT_EQ(j["primitives"][0]["stripped"], true);
+    EXPECT_EQ(cli("strip " + q(scene) + " -o " + q(s / "o2.glb") + " --indices " + q(s / "i.txt")).code, 4);
+    // Any other output: all triangle primitives as one mesh, verified like any input.
+    EXPECT_EQ(cli("info " + q(data("scene.glb"))).code, 0);
+    CliRun p = cli("strip " + q(data("scene.glb")) + " -o " + q(s / "o.ply") + " --indices " + q(s / "o.txt"));
+    ASSERT_EQ(p.code, 0) << p.out;
+    CliRun v = cli("verify " + q(data("scene.glb")) + " " + q(s / "o.ply") + " --indices " + q(s / "o.txt"));
+    EXPECT_EQ(v.code, 0) << v.out;
+}
