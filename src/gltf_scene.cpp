@@ -209,13 +209,6 @@ uint64_t weld_equal_vertices(const std::map<std::string, AccessorData>& attrs, s
     return merged;
 }
 
-std::string why_kept(const tinygltf::Primitive& prim) {
-    if (!gltf_detail::is_triangle_primitive(prim)) return "not a TRIANGLES primitive with POSITION";
-    if (!prim.targets.empty()) return "has morph targets (not stripped)";
-    if (prim.extensions.count("KHR_draco_mesh_compression")) return "Draco-compressed (not stripped)";
-    return {};
-}
-
 GltfPrimitiveResult strip_primitive(tinygltf::Model& model, tinygltf::Primitive& prim, const PipelineOptions& base,
                                     const std::string& name) {
     GltfPrimitiveResult res;
@@ -271,7 +264,7 @@ std::vector<GltfPrimitiveResult> strip_gltf_file(const std::string& in_path, con
             tinygltf::Primitive& prim = model.meshes[m].primitives[p];
             const std::string name = in_path + ": mesh " + std::to_string(m) + " primitive " + std::to_string(p);
             GltfPrimitiveResult res;
-            res.note = why_kept(prim);
+            res.note = gltf_detail::why_not_stripped(model, prim);
             if (res.note.empty()) res = strip_primitive(model, prim, options, name);
             res.mesh = static_cast<int>(m);
             res.primitive = static_cast<int>(p);

@@ -39,6 +39,10 @@ AccessorData read_accessor(const tinygltf::Model& model, int index, const std::s
 /// True for a primitive singlestrip strips: mode TRIANGLES (4) with POSITION.
 bool is_triangle_primitive(const tinygltf::Primitive& prim);
 
+/// Why a primitive is left as it is ("" when it can be stripped): not triangles, morph targets,
+/// Draco, a POSITION that is not float VEC3 (quantized), a sparse or buffer-less accessor.
+std::string why_not_stripped(const tinygltf::Model& model, const tinygltf::Primitive& prim);
+
 /// The primitive's triangles (its indices, or 0,1,2, 3,4,5, ... without indices).
 /// \throw InputError for an index out of range of POSITION.
 std::vector<Triangle> primitive_triangles(const tinygltf::Model& model, const tinygltf::Primitive& prim, std::size_t vertices,

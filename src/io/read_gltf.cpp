@@ -112,6 +112,24 @@ bool is_triangle_primitive(const tinygltf::Primitive& prim) {
     return prim.mode == TINYGLTF_MODE_TRIANGLES && prim.attributes.count("POSITION") != 0;
 }
 
+std::string why_not_stripped(const tinygltf::Model& model, const tinygltf::Primitive& prim) {
+    if (!is_triangle_primitive(prim)) return "not a TRIANGLES primitive with POSITION";
+    if (!prim.targets.empty()) return "has morph targets (not stripped)";
+    if (prim.extensions.count("KHR_draco_mesh_compression")) return "Draco-compressed (not stripped)";
+    auto usable = [&](int i) {
+        if (i < 0 || static_cast<std::size_t>(i) >= model.accessors.size()) return false;
+        const tinygltf::Accessor& a = model.accessors[static_cast<std::size_t>(i)];
+        return !a.sparse.isSparse && a.bufferView >= 0 && static_cast<std::size_t>(a.bufferView) < model.bufferViews.size();
+    };
+    for (const auto& [name, index] : prim.attributes)
+        if (!usable(index)) return "attribute " + name + " is sparse or has no buffer view (not stripped)";
+    if (prim.indices >= 0 && !usable(prim.indices)) return "indices are sparse or have no buffer view (not stripped)";
+    const tinygltf::Accessor& pos = model.accessors[static_cast<std::size_t>(prim.attributes.at("POSITION"))];
+    if (pos.type != TINYGLTF_TYPE_VEC3 || pos.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT)
+        return "POSITION is not float VEC3 (quantized; not stripped)";
+    return {};
+}
+
 std::vector<Point3> primitive_positions(const tinygltf::Model& model, const tinygltf::Primitive& prim, const std::string& path) {
     const AccessorData d = read_accessor(model, prim.attributes.at("POSITION"), path);
     if (d.type != TINYGLTF_TYPE_VEC3 || d.component_type != TINYGLTF_COMPONENT_TYPE_FLOAT)
@@ -154,14 +172,15 @@ TriangleSoup read_gltf_soup(const std::string& path) {
     for (std::size_t m = 0; m < model.meshes.size(); ++m)
         for (std::size_t p = 0; p < model.meshes[m].primitives.size(); ++p) {
             const tinygltf::Primitive& prim = model.meshes[m].primitives[p];
-            if (!is_triangle_primitive(prim)) continue;
+            if (!why_not_stripped(model, prim).empty()) continue;
             const auto base = static_cast<uint32_t>(soup.points.size());
             const std::vector<Point3> pts = primitive_positions(model, prim, path);
             soup.points.insert(soup.points.end(), pts.begin(), pts.end());
             for (Triangle t : primitive_triangles(model, prim, pts.size(), path))
                 soup.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
         }
-    if (soup.triangles.empty()) throw InputError(path + ": no faces (no mesh primitive in mode TRIANGLES (4) with a POSITION attribute)");
+    if (soup.triangles.empty())
+        throw InputError(path + ": no faces (no mesh primitive in mode TRIANGLES (4) with a float POSITION attribute)");
     return soup;
 }
 
