@@ -70,6 +70,7 @@ struct StripStats {
     StripEngine engine = StripEngine::Matching;  ///< the engine that built the strip
     uint32_t loops = 0;                          ///< matching engine: loops and paths before joining
     uint32_t ring_flips = 0;                     ///< matching engine: vertex rings flipped to join loops for free
+    uint32_t absorbed = 0;                       ///< matching engine: loops taken into the path for free (end rotations)
     uint32_t parity_splits = 0;                  ///< matching engine: rounds of splits beside faces left short
     uint32_t unmatched = 0;                      ///< matching engine: faces left short by the matching (path ends)
     /// Matching engine: its loops and paths could not be joined into one strip, so the growth

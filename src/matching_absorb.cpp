@@ -1,0 +1,210 @@
+// singlestrip — matching engine: loops taken into one growing path for free, before any split
+// (rotation-extension, Pósa 1976). A path end next to a loop opens the loop there and continues
+// round it; a path end next to a face x inside the path links to x and drops x's link towards the
+// end, so the part between turns round and x's old neighbour becomes the end. Rotations are
+// searched at random from the ends and kept only when they lead to a loop taken in for fewer GL
+// indices than its split would cost. Only loops are handled (no pins, no other paths); what is
+// left is joined by merge_all().
+#include <algorithm>
+#include <cstdint>
+#include <initializer_list>
+#include <vector>
+
+#include "matching_builder.hpp"
+#include "path_order.hpp"
+
+namespace singlestrip::matching {
+
+std::vector<uint32_t> MatchingBuilder::loop_from(uint32_t cut) const {
+    std::vector<uint32_t> seq;
+    uint32_t in = cut, f = Mesh::face(cut);
+    for (;;) {
+        seq.push_back(f);
+        uint32_t out = kNone;
+        for (uint32_t h = 3 * f; h < 3 * f + 3; ++h)
+            if (used_[h] && h != in) out = h;
+        if (out == kNone || out == mesh_.twin(cut)) return seq;
+        in = mesh_.twin(out);
+        f = Mesh::face(in);
+    }
+}
+
+// 1 if the GL strip needs a swap at crossed half-edge h: the turns in its two faces (the faces'
+// edges left uncrossed) pivot on the same endpoint of h. Path ends make no turn.
+int MatchingBuilder::swap_at(uint32_t h) const {
+    const uint32_t t = mesh_.twin(h);
+    const uint32_t f = Mesh::face(h), g = Mesh::face(t);
+    if (hdeg(f) != 2 || hdeg(g) != 2) return 0;
+    const bool f_at_from = !used_[Mesh::prev(h)];  // f's uncrossed edge touches from(h)
+    const bool g_at_from = !used_[Mesh::next(t)];  // g's uncrossed edge touches to(t) = from(h)
+    return f_at_from == g_at_from;
+}
+
+// Swaps at the crossed edges of the given faces (each edge counted once).
+int MatchingBuilder::swaps_around(std::initializer_list<uint32_t> faces) const {
+    uint32_t seen[9];
+    uint32_t n = 0;
+    int sum = 0;
+    for (uint32_t f : faces)
+        for (uint32_t h = 3 * f; h < 3 * f + 3; ++h) {
+            if (!used_[h]) continue;
+            const uint32_t key = std::min(h, mesh_.twin(h));
+            if (std::find(seen, seen + n, key) != seen + n) continue;
+            seen[n++] = key;
+            sum += swap_at(h);
+        }
+    return sum;
+}
+
+class PathGrower {
+public:
+    PathGrower(MatchingBuilder& b, uint32_t loops) : b_(b), path_(b.mesh_.num_faces()), loops_(loops) {}
+    void run();
+
+private:
+    struct Take {
+        uint32_t link = kNone, cut = kNone;  ///< link: a free edge of the end; cut: a link of the loop
+        int cost = 0;                        ///< swaps added
+    };
+    struct Rotation {
+        uint32_t side, link, dropped, from;
+    };
+    // A split join adds two triangles (two GL indices) and may add swaps of its own: a loop is
+    // worth taking in while the turns changed cost fewer than 4 swaps (best of 2, 4 and unbounded
+    // on the libcgal-demo meshes; docs/algorithm.md).
+    static constexpr int kSplitCost = 4;
+    static constexpr uint64_t kWindow = 4096;  ///< rotations without a loop taken in, then stop
+
+    MatchingBuilder& b_;
+    PathOrder path_;
+    uint32_t loops_;               ///< loops not yet in the path
+    uint32_t root_ = kNone;        ///< the path's structure id
+    uint32_t ends_[2] = {};        ///< front, back
+    std::vector<Rotation> trial_;  ///< rotations since the last loop taken in
+    int trial_cost_ = 0;           ///< swaps they added
+
+    void start();
+    [[nodiscard]] Take best_take(uint32_t side);
+    void take(uint32_t side, const Take& t);
+    void rotate(uint32_t side, uint32_t h);
+    void reverse(uint32_t side, uint32_t from) { side ? path_.reverse_back(from) : path_.reverse_front(from); }
+    void undo_trial();
+    bool take_all();
+};
+
+// The path starts as the first loop, cut open at its first crossed edge.
+void PathGrower::start() {
+    uint32_t cut = kNone;
+    for (uint32_t h = 0; cut == kNone; ++h)
+        if (b_.used_[h]) cut = h;
+    root_ = b_.find(b_.sid_[Mesh::face(cut)]);
+    path_.append(b_.loop_from(cut));
+    b_.set_pair(b_.used_, cut, 0);
+    b_.cycle_[root_] = 0;
+    ends_[0] = Mesh::face(cut);
+    ends_[1] = b_.mesh_.neighbor(cut);
+    --loops_;
+}
+
+// The cheapest way to take a loop in at ends_[side]: link into its face g, cut one of g's links.
+PathGrower::Take PathGrower::best_take(uint32_t side) {
+    Take best;
+    const uint32_t e = ends_[side];
+    for (uint32_t h = 3 * e; h < 3 * e + 3; ++h) {
+        if (!b_.passable(h) || b_.used_[h]) continue;
+        const uint32_t g = b_.mesh_.neighbor(h), r = b_.find(b_.sid_[g]);
+        if (r == root_ || !b_.cycle_[r] || b_.pinned_[r]) continue;
+        for (uint32_t gc = 3 * g; gc < 3 * g + 3; ++gc) {
+            if (!b_.used_[gc]) continue;
+            const uint32_t c = b_.mesh_.neighbor(gc);
+            const int before = b_.swaps_around({e, g, c});
+            b_.set_pair(b_.used_, gc, 0), b_.set_pair(b_.used_, h, 1);
+            const int cost = b_.swaps_around({e, g, c}) - before;
+            b_.set_pair(b_.used_, gc, 1), b_.set_pair(b_.used_, h, 0);
+            if (best.link == kNone || cost < best.cost) best = {h, gc, cost};
+        }
+    }
+    return best;
+}
+
+void PathGrower::take(uint32_t side, const Take& t) {
+    std::vector<uint32_t> seq = b_.loop_from(t.cut);
+    b_.uf_[b_.find(b_.sid_[Mesh::face(t.cut)])] = root_;
+    b_.set_pair(b_.used_, t.cut, 0);
+    b_.set_pair(b_.used_, t.link, 1);
+    side ? path_.append(seq) : path_.prepend(seq);
+    ends_[side] = seq.back();
+    --loops_;
+    ++b_.stats_.absorbed;
+    trial_.clear();
+    trial_cost_ = 0;
+}
+
+// h: a free edge of ends_[side] into face x of the path.
+void PathGrower::rotate(uint32_t side, uint32_t h) {
+    const uint32_t e = ends_[side], x = b_.mesh_.neighbor(h), px = path_.position(x), n = path_.size();
+    if (side ? px + 2 >= n : px < 2) return;  // x is the end's own neighbour
+    const uint32_t from = side ? px + 1 : px;
+    const uint32_t y = path_.at(side ? px + 1 : px - 1);
+    uint32_t xy = kNone;
+    for (uint32_t k = 3 * x; k < 3 * x + 3; ++k)
+        if (b_.used_[k] && b_.mesh_.neighbor(k) == y) xy = k;
+    const int before = b_.swaps_around({e, x, y});
+    b_.set_pair(b_.used_, xy, 0);
+    b_.set_pair(b_.used_, h, 1);
+    trial_cost_ += b_.swaps_around({e, x, y}) - before;
+    reverse(side, from);
+    trial_.push_back({side, h, xy, from});
+    ends_[side] = y;
+}
+
+void PathGrower::undo_trial() {
+    for (size_t i = trial_.size(); i-- > 0;) {
+        const Rotation& r = trial_[i];
+        reverse(r.side, r.from);
+        b_.set_pair(b_.used_, r.link, 0);
+        b_.set_pair(b_.used_, r.dropped, 1);
+        ends_[r.side] = Mesh::face(r.link);
+    }
+    trial_.clear();
+    trial_cost_ = 0;
+}
+
+// Every loop worth taking in at either end; true if one was.
+bool PathGrower::take_all() {
+    bool took = false;
+    for (uint32_t side = 0; side < 2; ++side)
+        for (Take t; (t = best_take(side)).link != kNone && trial_cost_ + t.cost < kSplitCost;) take(side, t), took = true;
+    return took;
+}
+
+void PathGrower::run() {
+    start();
+    const uint32_t nf = b_.mesh_.num_faces();
+    uint64_t rng = 0x9e3779b97f4a7c15ULL, budget = 16ULL * nf, idle = 0;  // xorshift: reproducible
+    while (loops_ > 0 && budget > 0 && idle < kWindow) {
+        if (take_all()) {
+            idle = 0;
+            continue;
+        }
+        rng ^= rng << 13, rng ^= rng >> 7, rng ^= rng << 17;
+        const uint32_t side = rng & 1, h = 3 * ends_[side] + (rng >> 1) % 3;
+        --budget, ++idle;
+        if (b_.passable(h) && !b_.used_[h] && b_.find(b_.sid_[b_.mesh_.neighbor(h)]) == root_) rotate(side, h);
+        if (trial_cost_ >= kSplitCost + 6) undo_trial();  // too far from the pattern: back to the last take
+    }
+    undo_trial();
+}
+
+void MatchingBuilder::absorb_loops() {
+    if (num_pins_ > 0 || mesh_.num_faces() < 2) return;
+    uint32_t loops = 0;
+    for (uint32_t s = 0; s < uf_.size(); ++s)
+        if (find(s) == s) {
+            if (!cycle_[s] || pinned_[s]) return;
+            ++loops;
+        }
+    if (loops >= 2) PathGrower(*this, loops).run();
+}
+
+}  // namespace singlestrip::matching

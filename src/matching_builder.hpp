@@ -1,0 +1,100 @@
+// singlestrip — the matching engine's builder, shared by its source files (private header):
+//   strip_matching.cpp  pins, ear and bridge splits, the patterned matching, run() and the fallback;
+//   matching_repair.cpp faces left short: augmenting paths, Edmonds in balls, splits beside them;
+//   matching_joins.cpp  loops and paths labelled, alternating-cycle flips, the joins;
+//   matching_absorb.cpp loops taken into one growing path by end rotations.
+// The method and why it ends in one strip: docs/algorithm.md, "The matching engine".
+#pragma once
+
+#include <cstdint>
+#include <initializer_list>
+#include <optional>
+#include <vector>
+
+#include "singlestrip/mesh.hpp"
+#include "singlestrip/strip.hpp"
+
+namespace singlestrip::matching {
+
+class MatchingBuilder {
+public:
+    MatchingBuilder(Mesh mesh, const StripOptions& options) : mesh_(std::move(mesh)), opt_(options) {}
+    StripResult run();
+
+private:
+    Mesh mesh_;
+    const StripOptions& opt_;
+    // Per half-edge, symmetric across twins (a half-edge and its twin always agree).
+    std::vector<uint8_t> blocked_;  ///< constraint edge: never crossed
+    std::vector<uint8_t> matched_;  ///< passable edge not crossed, paired by the matching
+    std::vector<uint8_t> used_;     ///< crossed by the strip (an edge of the loops and paths)
+    // Per face.
+    std::vector<uint8_t> vlink_;  ///< linked to the virtual face (a pinned end)
+    std::vector<uint8_t> quota_;  ///< matched edges still wanted
+    std::vector<uint32_t> sid_;   ///< structure (loop or path) id, through uf_
+    // Per structure id.
+    std::vector<uint32_t> uf_;           ///< union-find parent
+    std::vector<uint8_t> cycle_;         ///< at a root: the structure is a loop (no free end)
+    std::vector<uint8_t> pinned_;        ///< at a root: holds the virtual face
+    uint32_t pins_[2] = {kNone, kNone};  ///< source face (or seed) and target face
+    uint32_t num_pins_ = 0;
+    bool reversed_ = false;  ///< only a target: the walk starts there and is reversed
+    StripStats stats_;
+    std::vector<Triangle> input_faces_;  ///< the input, to rebuild it if the split budget runs out
+    std::optional<Mesh> pre_merge_;      ///< the mesh before the joins, kept when paths remain
+    uint32_t pre_merge_splits_ = 0;
+    // Augmenting search, per face: the outer face it was reached from and the two edges used.
+    std::vector<uint32_t> aug_prev_, aug_matched_, aug_unmatched_, aug_queue_;
+
+    [[nodiscard]] bool passable(uint32_t h) const { return !mesh_.is_boundary(h) && !blocked_[h]; }
+    [[nodiscard]] uint32_t degree(uint32_t f) const { return passable(3 * f) + passable(3 * f + 1) + passable(3 * f + 2); }
+    /// Links of f in the loops-and-paths graph, the virtual face included.
+    [[nodiscard]] uint32_t hdeg(uint32_t f) const { return used_[3 * f] + used_[3 * f + 1] + used_[3 * f + 2] + vlink_[f]; }
+    void set_pair(std::vector<uint8_t>& a, uint32_t h, uint8_t value) {
+        a[h] = value;
+        a[mesh_.twin(h)] = value;
+    }
+    uint32_t find(uint32_t s) {
+        while (uf_[s] != s) s = uf_[s] = uf_[uf_[s]];
+        return s;
+    }
+
+    void choose_pins();
+    SplitResult split(uint32_t h);
+    void split_ears();
+    void set_quotas();
+    std::vector<uint32_t> dual_bridges() const;
+    static constexpr uint32_t kMinBridgeSide = 16;
+    void split_bridges();
+    bool chain_reaches_branch(uint32_t f, uint32_t from) const;
+    void match_patterned();
+    bool augment_from(uint32_t u, std::vector<uint32_t>& stamp, uint32_t mark, size_t budget);
+    void settle_leftovers();
+    void repair_short(std::vector<uint32_t>& short_faces);
+    bool split_beside(uint32_t u);
+    bool repair_in_balls(std::vector<uint32_t>& short_faces, size_t ball);
+    bool repair_ball(const std::vector<uint32_t>& short_faces, size_t ball);
+    static constexpr size_t kBallOneByOne = 8192;
+    std::vector<uint32_t> ball_local_;
+    void label_structures();
+    void merge_all();
+    void reduce_loops();
+    void absorb_loops();
+    friend class PathGrower;
+    std::vector<uint32_t> loop_from(uint32_t cut) const;
+    int swap_at(uint32_t h) const;
+    int swaps_around(std::initializer_list<uint32_t> faces) const;
+    bool flip_alternating(uint32_t f1);
+    bool meets_first(uint32_t from, uint32_t back, uint32_t good, uint32_t bad) const;
+    bool try_merge(uint32_t h, bool allow_split);
+    void join(uint32_t h, uint32_t a, uint32_t b, bool cycle, bool pinned);
+    void rotate_into(uint32_t h, uint32_t a, uint32_t b);
+    void merge_by_split(uint32_t h, uint32_t a, uint32_t b);
+    bool single_strip_ready();
+    std::vector<uint32_t> walk() const;
+    StripResult finish(std::vector<uint32_t> order);
+    StripResult fallback();
+    Mesh input_mesh() const;
+};
+
+}  // namespace singlestrip::matching

@@ -1,0 +1,219 @@
+// singlestrip — matching engine: loops and paths labelled, loops joined by flipping alternating
+// cycles, then the joins (path ends for free, loops by one midpoint split each).
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
+#include "matching_builder.hpp"
+
+namespace singlestrip::matching {
+
+// Loops and paths: components of the crossed edges, the virtual face joining the pinned faces.
+void MatchingBuilder::label_structures() {
+    const uint32_t nf = mesh_.num_faces();
+    sid_.assign(nf, kNone);
+    uf_.clear();
+    cycle_.clear();
+    pinned_.clear();
+    std::vector<uint32_t> stack;
+    for (uint32_t s = 0; s < nf; ++s) {
+        if (sid_[s] != kNone) continue;
+        const uint32_t id = static_cast<uint32_t>(uf_.size());
+        bool ends = false, pinned = false;
+        stack.assign(1, s);
+        sid_[s] = id;
+        while (!stack.empty()) {
+            const uint32_t f = stack.back();
+            stack.pop_back();
+            ends |= hdeg(f) < 2;
+            auto visit = [&](uint32_t g) {
+                if (sid_[g] != kNone) return;
+                sid_[g] = id;
+                stack.push_back(g);
+            };
+            for (uint32_t k = 0; k < 3; ++k)
+                if (used_[3 * f + k]) visit(mesh_.neighbor(3 * f + k));
+            if (vlink_[f]) {
+                pinned = true;
+                for (uint32_t i = 0; i < num_pins_; ++i) visit(pins_[i]);
+            }
+        }
+        uf_.push_back(id);
+        cycle_.push_back(!ends && !(pinned && num_pins_ == 1));
+        pinned_.push_back(pinned);
+    }
+    stats_.loops = static_cast<uint32_t>(uf_.size());
+}
+
+// Walking loop from face `from` away from face `back`: true if `good` comes before `bad`
+// (within a bound; false past it).
+bool MatchingBuilder::meets_first(uint32_t from, uint32_t back, uint32_t good, uint32_t bad) const {
+    uint32_t prev = back, cur = from;
+    for (uint32_t step = 0; step < 256; ++step) {
+        if (cur == good) return true;
+        if (cur == bad) return false;
+        uint32_t next = kNone;
+        for (uint32_t h = 3 * cur; h < 3 * cur + 3; ++h)
+            if (used_[h] && mesh_.neighbor(h) != prev) next = mesh_.neighbor(h);
+        if (next == kNone) return false;
+        prev = cur;
+        cur = next;
+    }
+    return false;
+}
+
+// An alternating cycle: crossed and matched edges in turn, each face on it once. Swapping crossed
+// and matched edges along it keeps one matched edge per face. Each loop it crosses opens at its
+// crossed edge and the new edges link the openings in turn, so loops met once are all joined into
+// one. A loop met twice, at crossed edges p then q (tail t, head h), stays joined only if its arc
+// from h_p away from t_p reaches h_q before t_q (else it splits off again): checked by walking
+// it. Depth-first from f1 through at most kMaxLoops crossed edges, at most one loop met twice.
+bool MatchingBuilder::flip_alternating(uint32_t f1) {
+    constexpr uint32_t kMaxLoops = 5;
+    if (vlink_[f1]) return false;
+    uint32_t m1 = kNone;  // f1's matched edge closes the cycle
+    for (uint32_t h = 3 * f1; h < 3 * f1 + 3; ++h)
+        if (matched_[h]) m1 = h;
+    if (m1 == kNone) return false;
+    const uint32_t close_face = mesh_.neighbor(m1);
+    if (find(sid_[close_face]) == find(sid_[f1])) return false;  // cheap filter: rarely joins loops
+    uint32_t path[2 * kMaxLoops];                                // crossed edge, then matched edge, in turn
+    uint32_t roots[kMaxLoops];
+    uint32_t rep_p = kNone, rep_q = kNone;  // depths of the two crossed edges of a loop met twice
+    auto faces_distinct = [&](uint32_t depth) {
+        uint32_t faces[2 * kMaxLoops];
+        for (uint32_t i = 0; i <= depth; ++i) faces[2 * i] = Mesh::face(path[2 * i]), faces[2 * i + 1] = mesh_.neighbor(path[2 * i]);
+        for (uint32_t i = 0; i < 2 * depth + 2; ++i)
+            for (uint32_t j = 0; j < i; ++j)
+                if (faces[i] == faces[j]) return false;
+        return true;
+    };
+    auto closes_one_loop = [&](uint32_t depth) {
+        if (rep_p == kNone) return true;
+        if (!faces_distinct(depth)) return false;
+        const uint32_t up = path[2 * rep_p], uq = path[2 * rep_q];
+        return meets_first(mesh_.neighbor(up), Mesh::face(up), mesh_.neighbor(uq), Mesh::face(uq));
+    };
+    // Returns true once a cycle is flipped. `f` is the face at which a crossed edge is taken.
+    auto search = [&](auto&& self, uint32_t f, uint32_t depth) -> bool {
+        const uint32_t r = find(sid_[f]);
+        if (!cycle_[r] || pinned_[r] || vlink_[f]) return false;
+        bool repeat = false;
+        for (uint32_t i = 0; i < depth; ++i)
+            if (roots[i] == r) {
+                if (rep_p != kNone) return false;
+                rep_p = i, rep_q = depth, repeat = true;
+            }
+        roots[depth] = r;
+        bool found = false;
+        for (uint32_t h = 3 * f; h < 3 * f + 3 && !found; ++h) {
+            if (!used_[h]) continue;
+            const uint32_t g = mesh_.neighbor(h);
+            uint32_t m = kNone;
+            for (uint32_t e = 3 * g; e < 3 * g + 3; ++e)
+                if (matched_[e]) m = e;
+            if (m == kNone || vlink_[g]) continue;
+            path[2 * depth] = h;
+            path[2 * depth + 1] = m;
+            if (g == close_face && mesh_.twin(m) == m1 && depth > 0 && closes_one_loop(depth)) {
+                for (uint32_t i = 0; i <= 2 * depth + 1; ++i) {
+                    set_pair(used_, path[i], !used_[path[i]]);
+                    set_pair(matched_, path[i], !matched_[path[i]]);
+                }
+                for (uint32_t i = 1; i <= depth; ++i) uf_[find(roots[i])] = find(roots[0]);
+                found = true;
+            } else if (depth + 1 < kMaxLoops && g != close_face) {
+                found = self(self, mesh_.neighbor(m), depth + 1);
+            }
+        }
+        if (repeat) rep_p = rep_q = kNone;
+        return found;
+    };
+    return search(search, f1, 0);
+}
+
+// Fewer loops before any split: flip alternating cycles that join loops.
+void MatchingBuilder::reduce_loops() {
+    for (uint32_t pass = 0, flips = 1; pass < 4 && flips > 0; ++pass) {  // a flip can enable another
+        flips = 0;
+        for (uint32_t f = 0; f < mesh_.num_faces(); ++f) flips += flip_alternating(f);
+        stats_.ring_flips += flips;
+    }
+}
+
+// The faces of a loop cut open at its crossed half-edge `cut`: from cut's face round to the face
+// across it.
+void MatchingBuilder::join(uint32_t h, uint32_t a, uint32_t b, bool cycle, bool pinned) {
+    set_pair(used_, h, 1);
+    uf_[b] = a;
+    cycle_[a] = cycle;
+    pinned_[a] = pinned;
+}
+
+// Path end across h joins loop a for free: the loop opens at h's face (one crossed edge dropped).
+void MatchingBuilder::rotate_into(uint32_t h, uint32_t a, uint32_t b) {
+    const uint32_t f = Mesh::face(h);
+    for (uint32_t k = 0; k < 3; ++k)
+        if (used_[3 * f + k]) {
+            set_pair(used_, 3 * f + k, 0);
+            break;
+        }
+    join(h, a, b, false, pinned_[b]);
+}
+
+// Loop a (h's face f crosses its two other edges) joins b (g = the face across h) by one
+// midpoint split of h: f_a-g_a and f_b-g_b become crossed, f's and g's outer edges stay as they
+// were. A loop joined to a loop stays a loop; to a path (g inside, at an end, or alone), a path.
+void MatchingBuilder::merge_by_split(uint32_t h, uint32_t a, uint32_t b) {
+    const uint32_t t = mesh_.twin(h);
+    split(h);
+    set_pair(used_, h, 1);  // f_a - g_a
+    set_pair(used_, t, 1);  // g_b - f_b
+    uf_[b] = a;
+    cycle_[a] = cycle_[b];
+    pinned_[a] = pinned_[a] || pinned_[b];
+}
+
+bool MatchingBuilder::try_merge(uint32_t h, bool allow_split) {
+    const uint32_t f = Mesh::face(h), g = mesh_.neighbor(h);
+    const uint32_t a = find(sid_[f]), b = find(sid_[g]);
+    const bool fe = hdeg(f) < 2, ge = hdeg(g) < 2;
+    if (a == b) {
+        if (cycle_[a] || !fe || !ge || f == g) return false;
+        set_pair(used_, h, 1);  // a path whose two ends touch closes into a loop
+        cycle_[a] = 1;
+        return true;
+    }
+    if (fe && ge) return join(h, a, b, false, pinned_[a] || pinned_[b]), true;
+    if (cycle_[a] && !pinned_[a] && ge) return rotate_into(h, a, b), true;
+    if (cycle_[b] && !pinned_[b] && fe) return rotate_into(mesh_.twin(h), b, a), true;
+    if (!allow_split || vlink_[f] || vlink_[g]) return false;
+    if (cycle_[a] && !(pinned_[a] && !cycle_[b])) return merge_by_split(h, a, b), true;
+    if (cycle_[b] && !(pinned_[b] && !cycle_[a])) return merge_by_split(mesh_.twin(h), b, a), true;
+    return false;
+}
+
+// Free joins first (path ends, path ends into loops), then splits, then free joins again.
+void MatchingBuilder::merge_all() {
+    for (bool allow_split : {false, true, false})
+        for (uint32_t f = 0; f < mesh_.num_faces(); ++f)
+            for (uint32_t k = 0; k < 3; ++k) {
+                const uint32_t h = 3 * f + k;
+                if (!passable(h) || used_[h]) continue;
+                if (find(sid_[f]) == find(sid_[mesh_.neighbor(h)]) && (cycle_[find(sid_[f])] || hdeg(f) == 2)) continue;
+                if (try_merge(h, allow_split)) k = kNone;  // f's edges changed: look at all three again
+            }
+}
+
+bool MatchingBuilder::single_strip_ready() {
+    uint32_t roots = 0, root = kNone;
+    for (uint32_t s = 0; s < uf_.size(); ++s)
+        if (find(s) == s) ++roots, root = s;
+    if (roots != 1) return false;
+    return num_pins_ != 2 || cycle_[root];
+}
+
+// The faces in strip order: from the first pinned face, else from a path end, else around the
+// loop from face 0. Empty if the crossed edges do not form one strip.
+
+}  // namespace singlestrip::matching

@@ -1,0 +1,50 @@
+// singlestrip — a sequence of faces with O(log n) position queries, splits, joins and reversals
+// (an implicit treap). The matching engine keeps its growing strip in one to rotate a path end
+// (Pósa's rotation: the end links to a face inside the path, and the part between them turns
+// round), which needs to know on which side of that face the end lies.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+namespace singlestrip {
+
+class PathOrder {
+public:
+    static constexpr uint32_t kNil = UINT32_MAX;
+
+    /// Room for elements 0..n-1; none is in the sequence yet. O(n).
+    explicit PathOrder(uint32_t n);
+
+    /// Appends `items` (not yet in the sequence) at the back, in order. O(k + log n).
+    void append(const std::vector<uint32_t>& items);
+    /// Puts `items` before the front, items[0] next to the old front and items.back() first (the
+    /// path grows from its front end as it does from its back end). O(k + log n).
+    void prepend(const std::vector<uint32_t>& items);
+    /// Position of element x (0 = front). \pre x is in the sequence. O(log n) expected.
+    [[nodiscard]] uint32_t position(uint32_t x);
+    /// Element at position k. \pre k < size(). O(log n) expected.
+    [[nodiscard]] uint32_t at(uint32_t k);
+    /// Reverses positions [0, k) (front part) or [k, size) (back part). O(log n) expected.
+    void reverse_front(uint32_t k);
+    void reverse_back(uint32_t k);
+    [[nodiscard]] uint32_t size() const { return root_ == kNil ? 0 : size_[root_]; }
+    [[nodiscard]] uint32_t front() { return at(0); }
+    [[nodiscard]] uint32_t back() { return at(size() - 1); }
+    /// The whole sequence, front to back. O(n).
+    [[nodiscard]] std::vector<uint32_t> items();
+
+private:
+    std::vector<uint32_t> left_, right_, parent_, size_;
+    std::vector<uint8_t> flip_;  ///< the subtree's order is reversed (not yet pushed down)
+    uint32_t root_ = kNil;
+
+    [[nodiscard]] static uint32_t priority(uint32_t x);
+    void push(uint32_t x);
+    void pull(uint32_t x);
+    [[nodiscard]] uint32_t build(const std::vector<uint32_t>& items, bool reversed);
+    [[nodiscard]] uint32_t merge(uint32_t a, uint32_t b);
+    void split(uint32_t t, uint32_t k, uint32_t& a, uint32_t& b);
+};
+
+}  // namespace singlestrip
