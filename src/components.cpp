@@ -164,6 +164,7 @@ void add_stats(StripStats& total, const StripStats& s) {
     total.ring_flips += s.ring_flips;
     total.parity_splits += s.parity_splits;
     total.unmatched += s.unmatched;
+    total.absorbed += s.absorbed;
     total.growth_fallback = total.growth_fallback || s.growth_fallback;
 }
 
