@@ -115,6 +115,7 @@ void check_requests(const TriangleSoup& s, const StripOptions& o) {
             throw RequestError("seed face " + std::to_string(*o.seed_face) + " is not incident to source vertex " +
                                std::to_string(*o.source));
     }
+    if (o.constraint_edges.empty()) return;
     std::unordered_set<uint64_t> edges;
     for (const Triangle& t : s.triangles)
         for (int k = 0; k < 3; ++k) {

@@ -44,6 +44,7 @@ VerifyReport strip_and_verify(const TriangleSoup& soup, PipelineOptions o, Pipel
     vi.restart_index = o.restart_index;
     vi.source = o.strip.source;
     vi.target = o.strip.target;
+    vi.constraints = o.strip.constraint_edges;
     const auto notes = replay_input_steps(vi, {o.weld, o.repair, o.orient});
     VerifyReport rep = verify(vi);
     rep.notes.insert(rep.notes.begin(), notes.begin(), notes.end());
@@ -208,6 +209,18 @@ TEST(Components, OneStripPerComponentWithEitherJoin) {
         ADD_FAILURE() << "source and target in different components";
     } catch (const RequestError& e) {
         EXPECT_NE(std::string(e.what()).find("same component"), std::string::npos) << e.what();
+    }
+    // Constraint edges go to the component holding them; a pair across components is no edge.
+    PipelineOptions c;
+    const Triangle& t = s.triangles[make_icosphere(1).triangles.size() + 5];  // a torus face
+    c.strip.constraint_edges = {{t[0], t[1]}, {s.triangles[0][0], s.triangles[0][1]}};
+    EXPECT_TRUE(strip_and_verify(s, c).ok());
+    c.strip.constraint_edges = {{0, t[0]}};
+    try {
+        stripify(s, c);
+        ADD_FAILURE() << "a constraint across components";
+    } catch (const RequestError& e) {
+        EXPECT_NE(std::string(e.what()).find("is not an edge of the mesh"), std::string::npos) << e.what();
     }
 }
 
