@@ -106,9 +106,13 @@ std::vector<Source> vertex_sources(const PipelineResult& r, const std::vector<Tr
     return src;
 }
 
+// Skin influences stay paired (nearest corner); custom integer attributes may be ids. Everything
+// else is interpolated and written as float, which every core attribute (and
+// KHR_mesh_quantization's) accepts with the same meaning.
 bool interpolated(const std::string& name, const AccessorData& d) {
-    if (name.rfind("JOINTS_", 0) == 0 || name.rfind("WEIGHTS_", 0) == 0) return false;  // skin influences stay paired
-    return d.component_type == TINYGLTF_COMPONENT_TYPE_FLOAT || d.normalized;
+    if (name.rfind("JOINTS_", 0) == 0 || name.rfind("WEIGHTS_", 0) == 0) return false;
+    if (name.rfind('_', 0) == 0) return d.component_type == TINYGLTF_COMPONENT_TYPE_FLOAT || d.normalized;
+    return true;
 }
 
 /// A new accessor for attribute `name` over the output vertices.
@@ -270,8 +274,11 @@ std::vector<GltfPrimitiveResult> strip_gltf_file(const std::string& in_path, con
             res.primitive = static_cast<int>(p);
             out.push_back(std::move(res));
         }
-    if (std::none_of(out.begin(), out.end(), [](const GltfPrimitiveResult& r) { return r.stripped; }))
-        throw InputError(in_path + ": no faces (no mesh primitive in mode TRIANGLES (4) with a POSITION attribute)");
+    if (std::none_of(out.begin(), out.end(), [](const GltfPrimitiveResult& r) { return r.stripped; })) {
+        std::string why;
+        for (const auto& r : out) why += "; mesh " + std::to_string(r.mesh) + " primitive " + std::to_string(r.primitive) + ": " + r.note;
+        throw InputError(in_path + ": no primitive to strip (none in mode TRIANGLES (4) with a usable POSITION" + why + ")");
+    }
     tinygltf::TinyGLTF writer;
     std::ostringstream os(std::ios::binary);
     std::string ext = out_path.substr(out_path.find_last_of('.'));

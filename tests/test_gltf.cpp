@@ -435,3 +435,28 @@ TEST(GltfInput, SceneWithSeveralTexturedPrimitivesStripsKeepsTheRestAndValidates
     }
     if (dir.empty()) GTEST_SKIP() << "checked; Khronos glTF-Validator unavailable: " << why;
 }
+
+TEST(GltfInput, QuantizedPrimitiveIsStrippedWithFloatAttributes) {
+    // KHR_mesh_quantization: uint16 positions, normalised int8 normals, uint16 UVs. The strip keeps
+    // the values (new accessors are float, which the extension allows) and the node's dequantizing scale.
+    const std::string in = std::string(SINGLESTRIP_SOURCE_DIR) + "/tests/data/quantized.glb";
+    const std::string out = fs::absolute(scratch_dir() / "quantized_out.glb").string();
+    const auto prims = strip_gltf_file(in, out, PipelineOptions{});
+    ASSERT_EQ(prims.size(), 1u);
+    EXPECT_TRUE(prims[0].stripped);
+    const tinygltf::Model src = load_any(in), m = load_any(out);
+    EXPECT_EQ(m.nodes[0].scale, src.nodes[0].scale);
+    const auto& sp = src.meshes[0].primitives[0];
+    const auto& mp = m.meshes[0].primitives[0];
+    EXPECT_EQ(mp.mode, TINYGLTF_MODE_TRIANGLE_STRIP);
+    const auto before = floats(src, sp.attributes.at("POSITION")), after = floats(m, mp.attributes.at("POSITION"));
+    for (size_t i = 0; i < before.size(); ++i) EXPECT_EQ(after[i], before[i]);
+    const auto nrm = floats(m, mp.attributes.at("NORMAL"));
+    for (size_t v = 0; v < nrm.size() / 3; ++v) EXPECT_NEAR(std::hypot(nrm[3 * v], nrm[3 * v + 1], nrm[3 * v + 2]), 1.0, 1e-5);
+    std::string why;
+    const std::string dir = validator_dir(why);
+    if (dir.empty()) GTEST_SKIP() << "checked; Khronos glTF-Validator unavailable: " << why;
+    const nlohmann::json v = validate_gltf(dir, out);
+    ASSERT_TRUE(v.is_object() && v.contains("issues")) << v.dump();
+    EXPECT_EQ(v["issues"]["numErrors"].get<int>(), 0) << v["issues"].dump(1);
+}

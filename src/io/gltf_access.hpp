@@ -40,7 +40,7 @@ AccessorData read_accessor(const tinygltf::Model& model, int index, const std::s
 bool is_triangle_primitive(const tinygltf::Primitive& prim);
 
 /// Why a primitive is left as it is ("" when it can be stripped): not triangles, morph targets,
-/// Draco, a POSITION that is not float VEC3 (quantized), a sparse or buffer-less accessor.
+/// Draco, a POSITION that is not VEC3, a sparse or buffer-less accessor.
 std::string why_not_stripped(const tinygltf::Model& model, const tinygltf::Primitive& prim);
 
 /// The primitive's triangles (its indices, or 0,1,2, 3,4,5, ... without indices).
@@ -48,7 +48,8 @@ std::string why_not_stripped(const tinygltf::Model& model, const tinygltf::Primi
 std::vector<Triangle> primitive_triangles(const tinygltf::Model& model, const tinygltf::Primitive& prim, std::size_t vertices,
                                           const std::string& path);
 
-/// Positions of the primitive widened to double. \throw InputError unless float VEC3.
+/// Positions of the primitive widened to double (quantized ones decoded, node transform not
+/// applied). \throw InputError unless VEC3.
 std::vector<Point3> primitive_positions(const tinygltf::Model& model, const tinygltf::Primitive& prim, const std::string& path);
 
 }  // namespace singlestrip::gltf_detail

@@ -1,6 +1,8 @@
 // glTF input (.glb / .gltf): the accessor reader shared with the scene rewriter, and
 // read_gltf_soup() for the plain pipeline (info, strip to .ply/.obj/.off, verify).
+#include <cctype>
 #include <cstring>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -54,6 +56,18 @@ float decode_component(const unsigned char* p, int component_type, bool normaliz
     }
 }
 
+/// A compressed file fails in tinygltf with a message about buffer sizes; name the cause.
+std::string compression_hint(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::string head(1 << 20, '\0');
+    in.read(head.data(), static_cast<std::streamsize>(head.size()));
+    head.resize(static_cast<std::size_t>(in.gcount()));
+    for (const char* ext : {"EXT_meshopt_compression", "KHR_meshopt_compression", "KHR_draco_mesh_compression"})
+        if (head.find(ext) != std::string::npos)
+            return std::string(" (the file uses ") + ext + ", which singlestrip cannot decode: write it uncompressed first)";
+    return {};
+}
+
 }  // namespace
 
 tinygltf::Model load_model(const std::string& path) {
@@ -68,7 +82,9 @@ tinygltf::Model load_model(const std::string& path) {
         ok = loader.LoadBinaryFromFile(&model, &err, &warn, path);
     else
         ok = loader.LoadASCIIFromFile(&model, &err, &warn, path);
-    if (!ok) throw InputError(path + ": cannot read glTF: " + (err.empty() ? warn : err));
+    std::string why = err.empty() ? warn : err;
+    while (!why.empty() && std::isspace(static_cast<unsigned char>(why.back()))) why.pop_back();
+    if (!ok) throw InputError(path + ": cannot read glTF: " + why + compression_hint(path));
     return model;
 }
 
@@ -124,16 +140,15 @@ std::string why_not_stripped(const tinygltf::Model& model, const tinygltf::Primi
     for (const auto& [name, index] : prim.attributes)
         if (!usable(index)) return "attribute " + name + " is sparse or has no buffer view (not stripped)";
     if (prim.indices >= 0 && !usable(prim.indices)) return "indices are sparse or have no buffer view (not stripped)";
-    const tinygltf::Accessor& pos = model.accessors[static_cast<std::size_t>(prim.attributes.at("POSITION"))];
-    if (pos.type != TINYGLTF_TYPE_VEC3 || pos.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT)
-        return "POSITION is not float VEC3 (quantized; not stripped)";
+    if (model.accessors[static_cast<std::size_t>(prim.attributes.at("POSITION"))].type != TINYGLTF_TYPE_VEC3)
+        return "POSITION is not VEC3 (not stripped)";
     return {};
 }
 
 std::vector<Point3> primitive_positions(const tinygltf::Model& model, const tinygltf::Primitive& prim, const std::string& path) {
     const AccessorData d = read_accessor(model, prim.attributes.at("POSITION"), path);
-    if (d.type != TINYGLTF_TYPE_VEC3 || d.component_type != TINYGLTF_COMPONENT_TYPE_FLOAT)
-        throw InputError(path + ": POSITION is not a float VEC3 accessor");
+    // Quantized positions (KHR_mesh_quantization) are decoded; the node transform is not applied.
+    if (d.type != TINYGLTF_TYPE_VEC3) throw InputError(path + ": POSITION is not a VEC3 accessor");
     std::vector<Point3> pts(d.count);
     for (std::size_t i = 0; i < d.count; ++i)
         for (int k = 0; k < 3; ++k) pts[i][static_cast<std::size_t>(k)] = d.values[3 * i + static_cast<std::size_t>(k)];
@@ -179,8 +194,7 @@ TriangleSoup read_gltf_soup(const std::string& path) {
             for (Triangle t : primitive_triangles(model, prim, pts.size(), path))
                 soup.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
         }
-    if (soup.triangles.empty())
-        throw InputError(path + ": no faces (no mesh primitive in mode TRIANGLES (4) with a float POSITION attribute)");
+    if (soup.triangles.empty()) throw InputError(path + ": no faces (no mesh primitive in mode TRIANGLES (4) with a POSITION attribute)");
     return soup;
 }
 

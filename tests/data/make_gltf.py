@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Writes tests/data/scene.gltf and scene.glb: a small textured glTF scene for the glTF-input tests.
+"""Writes tests/data/scene.gltf and scene.glb: a small textured glTF scene for the glTF-input tests,
+and quantized.glb (KHR_mesh_quantization: integer positions, normals and texture coordinates).
 Mesh 0: a tube with a UV seam (NORMAL, TEXCOORD_0, normalised-ubyte COLOR_0, indexed) and a cube
 with per-face UVs (24 vertices: every edge a seam); mesh 1 (skinned): a non-indexed grid (corners
 repeated with equal attributes, JOINTS_0/WEIGHTS_0); mesh 2: a LINES primitive (kept as is). One material with
@@ -135,4 +136,53 @@ js += b" " * ((4 - len(js) % 4) % 4)
 glb = struct.pack("<III", 0x46546C67, 2, 12 + 8 + len(js) + 8 + len(buf)) + struct.pack("<II", len(js), 0x4E4F534A) + js + \
     struct.pack("<II", len(buf), 0x004E4942) + bytes(buf)
 with open(os.path.join(D, "scene.glb"), "wb") as f:
+    f.write(glb)
+
+# A quantized grid (KHR_mesh_quantization): uint16 positions, normalised int8 normals, uint16
+# texture coordinates; the node's scale dequantizes the positions.
+buf = bytearray()
+views, accessors = [], []
+P, N, T, I = [], [], [], []
+n = 6
+for j in range(n + 1):
+    for i in range(n + 1):
+        P.append((i * 1000, j * 1000, (i * j) % 3 * 100))
+        N.append((0, 0, 127))
+        T.append((i * 65535 // n, j * 65535 // n))
+for j in range(n):
+    for i in range(n):
+        a, b, c, d = j * (n + 1) + i, j * (n + 1) + i + 1, (j + 1) * (n + 1) + i, (j + 1) * (n + 1) + i + 1
+        I += [a, b, d, a, d, c]
+pmin = [min(p[k] for p in P) for k in range(3)]
+pmax = [max(p[k] for p in P) for k in range(3)]
+
+def strided(data, fmt, count, typ, ctype, stride, **kw):
+    """Elements padded to `stride` bytes: vertex attributes must be 4-byte aligned."""
+    i = add(data, fmt, count, typ, ctype, **kw)
+    views[-1]["byteStride"] = stride
+    return i
+
+quant = {"attributes": {"POSITION": strided(flat([p + (0,) for p in P]), "H", len(P), "VEC3", 5123, 8, minmax=(pmin, pmax)),
+                        "NORMAL": strided(flat([q + (0,) for q in N]), "b", len(N), "VEC3", 5120, 4, normalized=True),
+                        "TEXCOORD_0": add(flat(T), "H", len(T), "VEC2", 5123, normalized=True)},
+         "indices": add(I, "H", len(I), "SCALAR", 5123, target=34963), "mode": 4}
+while len(buf) % 4:
+    buf.append(0)
+gltf = {
+    "asset": {"version": "2.0", "generator": "singlestrip tests/data/make_gltf.py"},
+    "extensionsUsed": ["KHR_mesh_quantization"],
+    "extensionsRequired": ["KHR_mesh_quantization"],
+    "scene": 0,
+    "scenes": [{"nodes": [0]}],
+    "nodes": [{"mesh": 0, "scale": [0.001, 0.001, 0.001]}],
+    "meshes": [{"primitives": [quant]}],
+    "accessors": accessors,
+    "bufferViews": views,
+    "buffers": [{"byteLength": len(buf)}],
+}
+js = json.dumps(gltf).encode()
+js += b" " * ((4 - len(js) % 4) % 4)
+glb = struct.pack("<III", 0x46546C67, 2, 12 + 8 + len(js) + 8 + len(buf)) + struct.pack("<II", len(js), 0x4E4F534A) + js + \
+    struct.pack("<II", len(buf), 0x004E4942) + bytes(buf)
+with open(os.path.join(D, "quantized.glb"), "wb") as f:
     f.write(glb)
