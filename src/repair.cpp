@@ -324,7 +324,9 @@ std::vector<uint32_t> weld_map(const std::vector<Point3>& points) {
     // Non-finite points never weld (and would break the strict ordering of the sort).
     for (uint32_t v = 0; v < points.size(); ++v)
         if (std::isfinite(points[v][0]) && std::isfinite(points[v][1]) && std::isfinite(points[v][2])) idx.push_back(v);
-    std::stable_sort(idx.begin(), idx.end(), [&](uint32_t a, uint32_t b) { return points[a] < points[b]; });
+    // Ties by index (not std::stable_sort: its temporary buffer trips ASan's alloc-dealloc check
+    // in GCC 12's libstdc++).
+    std::sort(idx.begin(), idx.end(), [&](uint32_t a, uint32_t b) { return points[a] < points[b] || (points[a] == points[b] && a < b); });
     for (std::size_t i = 1; i < idx.size(); ++i)
         if (points[idx[i]] == points[idx[i - 1]]) rep[idx[i]] = rep[idx[i - 1]];
     return rep;
