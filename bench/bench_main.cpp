@@ -53,6 +53,7 @@
 #include <meshoptimizer.h>
 
 #include "families.hpp"
+#include "read_bench.hpp"
 #include "scaling.hpp"
 #include "singlestrip/encode.hpp"
 #include "singlestrip/errors.hpp"
@@ -1183,9 +1184,11 @@ int reps_for(uint64_t tris, bool quick) {
 
 void usage() {
     std::cout << "usage: singlestrip_bench [--quick] [--out DIR] [--tmp DIR] [--cgal DIR] [--only SUBSTR]\n"
-                 "         [--no-cgal] [--no-scaling] [--no-awkward] [--no-constraints] [--with-10m]\n"
+                 "         [--no-cgal] [--no-scaling] [--no-awkward] [--no-constraints] [--no-read] [--read-only] [--with-10m]\n"
                  "         [--max-size N] [--budget S] [--verify-max N] [--timeout S] [--mem-gb G]\n"
                  "  --quick          sizes up to 100K (1M for one family), 1-3 repetitions, 8 CGAL meshes (a smoke run)\n"
+                 "  --no-read        skip the read section (read_mesh_file on generated files of each format)\n"
+                 "  --read-only      only the read section\n"
                  "  --with-10m       add the 10M-triangle size to the scaling series (about 15 more minutes)\n"
                  "  --out DIR        where bench.csv, bench.md, ... go (default .)\n"
                  "  --tmp DIR        scratch for generated PLY inputs and outputs (default /tmp/singlestrip-bench)\n"
@@ -1201,7 +1204,7 @@ void usage() {
 
 int main(int argc, char** argv) {
     Settings cfg;
-    bool cgal = true, scaling = true, awkward = true, constraints = true, with_10m = false;
+    bool cgal = true, scaling = true, awkward = true, constraints = true, with_10m = false, read = true;
     std::string out = ".", tmp = "/tmp/singlestrip-bench", cgal_dir = "/tmp/cgaldata/data/meshes", only;
     uint64_t max_size = 0;
     double mem_gb = 12, budget = -1;
@@ -1232,6 +1235,10 @@ int main(int argc, char** argv) {
             awkward = false;
         else if (a == "--no-constraints")
             constraints = false;
+        else if (a == "--no-read")
+            read = false;
+        else if (a == "--read-only")
+            cgal = scaling = awkward = constraints = false;
         else if (a == "--with-10m")
             with_10m = true;
         else if (a == "--max-size")
@@ -1370,7 +1377,8 @@ int main(int argc, char** argv) {
         (row.spec.kind == Kind::Cgal ? ok_cgal : row.spec.kind == Kind::Scaling ? ok_scaling : ok_awkward).push_back(&row);
     }
     std::ostringstream md;
-    md << "### Targets\n\n" << targets(rows, cfg) << '\n';
+    if (!rows.empty()) md << "### Targets\n\n" << targets(rows, cfg) << '\n';
+    if (read) md << "### Reading (read_mesh_file, generated torus grids, page cache warm)\n\n" << read_section(tmp, cfg.quick) << '\n';
     if (!ok_cgal.empty()) {
         md << "### libcgal-demo meshes: quality\n\n" << quality_table(ok_cgal) << '\n';
         md << "### libcgal-demo meshes: time per stage\n\n" << time_table(ok_cgal, false) << '\n';

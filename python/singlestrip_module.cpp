@@ -5,7 +5,10 @@
 //                     engine="matching") -> dict
 //   singlestrip.verify(vertices, faces, result, constraints=None, source=None, target=None) -> dict
 //   singlestrip.decode_strip(indices) -> (T, 3) uint32 array
+//   singlestrip.read(path, format=None) -> (V (n, 3) float64, F (m, 3) uint32)
 //
+// Arrays in are checked for shape and kind before any conversion: vertices must be real numbers,
+// faces integers (a float face array is refused, never truncated), both of shape (k, 3).
 // strip() runs the CLI's pipeline (stripify(), pipeline.hpp: the same checks and messages,
 // prefixed by `name` where the CLI has the file name) and its report (report.hpp). Every
 // singlestrip::InputError / RequestError becomes ValueError, an InternalError RuntimeError.
@@ -25,6 +28,7 @@
 #include "singlestrip/errors.hpp"
 #include "singlestrip/pipeline.hpp"
 #include "singlestrip/report.hpp"
+#include "singlestrip/route.hpp"
 #include "singlestrip/strip.hpp"
 #include "singlestrip/verify.hpp"
 
@@ -35,14 +39,39 @@ namespace {
 
 using Pairs = std::vector<std::pair<uint32_t, uint32_t>>;
 
+std::string shape_of(const py::handle& obj) {
+    return py::str(py::array::ensure(obj).attr("shape"));
+}
+
+/// The array behind `obj` (converting lists) with its kind checked: 'f' for real numbers, 'i' for
+/// integers; numpy's own conversion would silently truncate 1.7 to 1 in a face array.
+void check_kind(const py::handle& obj, bool integers, const std::string& what) {
+    py::array a;
+    try {
+        a = py::array::ensure(obj);
+    } catch (const py::error_already_set&) {
+    }
+    if (!a) throw py::value_error(what + " must be a numpy array (or nested sequence) of shape (k, 3)");
+    const char kind = a.dtype().kind();
+    const bool ok = a.size() == 0 || integers ? (kind == 'i' || kind == 'u') : (kind == 'f' || kind == 'i' || kind == 'u');
+    if (ok) return;
+    const std::string dtype = py::str(a.dtype());
+    if (integers)
+        throw py::value_error(what + " must be an integer array of shape (m, 3) (vertex indices), got dtype " + dtype +
+                              "; convert explicitly, e.g. F.astype(np.uint32), if the values are whole numbers");
+    throw py::value_error(what + " must be an array of shape (n, 3) of real numbers (coordinates), got dtype " + dtype);
+}
+
 std::vector<ss::Point3> to_points(const py::handle& obj, const char* what) {
+    check_kind(obj, false, what);
     py::array_t<double, py::array::c_style | py::array::forcecast> a;
     try {
         a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(obj);
     } catch (const py::error_already_set&) {
         a = {};
     }
-    if (!a || a.ndim() != 2 || a.shape(1) != 3) throw py::value_error(std::string(what) + " must be an array of shape (n, 3) of numbers");
+    if (!a || a.ndim() != 2 || a.shape(1) != 3)
+        throw py::value_error(std::string(what) + " must be an array of shape (n, 3) of numbers, got shape " + shape_of(obj));
     std::vector<ss::Point3> pts(static_cast<size_t>(a.shape(0)));
     auto r = a.unchecked<2>();
     for (py::ssize_t i = 0; i < a.shape(0); ++i)
@@ -57,13 +86,15 @@ std::vector<ss::Point3> to_points(const py::handle& obj, const char* what) {
 }
 
 std::vector<ss::Triangle> to_faces(const py::handle& obj, size_t num_vertices, const char* what) {
+    check_kind(obj, true, what);
     py::array_t<int64_t, py::array::c_style | py::array::forcecast> a;
     try {
         a = py::array_t<int64_t, py::array::c_style | py::array::forcecast>::ensure(obj);
     } catch (const py::error_already_set&) {
         a = {};
     }
-    if (!a || a.ndim() != 2 || a.shape(1) != 3) throw py::value_error(std::string(what) + " must be an integer array of shape (m, 3)");
+    if (!a || a.ndim() != 2 || a.shape(1) != 3)
+        throw py::value_error(std::string(what) + " must be an integer array of shape (m, 3), got shape " + shape_of(obj));
     std::vector<ss::Triangle> f(static_cast<size_t>(a.shape(0)));
     auto r = a.unchecked<2>();
     for (py::ssize_t i = 0; i < a.shape(0); ++i)
@@ -139,6 +170,39 @@ ss::StripEngine to_engine(const std::string& name) {
     throw py::value_error("unknown engine '" + name + "' (choices: matching, growth)");
 }
 
+/// The route (route.hpp) as numpy arrays.
+py::dict route_dict(const ss::Route& route) {
+    std::vector<ss::Point3> pts;
+    std::vector<uint32_t> face, parent;
+    std::vector<double> distance;
+    for (const ss::RoutePoint& p : route.points) {
+        pts.push_back(p.position);
+        face.push_back(p.face);
+        parent.push_back(p.parent);
+        distance.push_back(p.distance);
+    }
+    py::dict d;
+    d["points"] = rows_array<double>(pts);
+    d["face"] = vec_array(face);
+    d["parent"] = vec_array(parent);
+    d["distance"] = vec_array(distance);
+    d["length"] = route.length;
+    d["planar_z"] = route.planar_z;
+    return d;
+}
+
+py::tuple read_mesh(const std::string& path, const py::object& format) {
+    ss::ReadOptions o;
+    if (!format.is_none()) o.format = format.cast<std::string>();
+    ss::TriangleSoup soup;
+    translate([&] {
+        py::gil_scoped_release release;
+        soup = ss::read_input(path, o);
+        return 0;
+    });
+    return py::make_tuple(rows_array<double>(soup.points), rows_array<uint32_t>(soup.triangles));
+}
+
 py::dict strip(const py::object& vertices, const py::object& faces, const py::object& constraints, const py::object& source,
                const py::object& target, bool cycles, const py::object& seed_face, bool greedy, bool orient, const std::string& name,
                const std::string& engine, bool repair, bool weld, const std::string& join) {
@@ -182,6 +246,7 @@ py::dict strip(const py::object& vertices, const py::object& faces, const py::ob
     } else {
         out["cycles"] = py::none();
     }
+    out["route"] = route_dict(ss::strip_route(r.arrays));
     // The CLI's --report keys (report.hpp), minus file names and timings.
     ss::ReportInput rep;
     rep.result = &r;
@@ -262,7 +327,10 @@ join: "degenerate" (default) or "restart" (0xFFFFFFFF) between the strips of sev
 
 Returns a dict: vertices (n', 3) float64 (input vertices first, midpoints after), faces (m', 3)
 uint32 in strip order, parent (m',) uint32 input face of each output face, strip (k,) uint32
-GL_TRIANGLE_STRIP indices, cycles (list of uint32 arrays, or None), report (dict).
+GL_TRIANGLE_STRIP indices, cycles (list of uint32 arrays, or None), route (dict: points (k, 3)
+float64 through face centroids and shared-edge midpoints in strip order, face and parent (k,)
+uint32, distance (k,) float64 along the route, length, planar_z), report (dict).
+Raises ValueError for arrays of the wrong shape or kind (faces must be integers).
 Raises ValueError for invalid input, an impossible request or an unknown engine (same messages
 as the CLI).)doc");
     m.def("verify", &verify, py::arg("vertices"), py::arg("faces"), py::arg("result"), py::arg("constraints") = py::none(),
@@ -279,4 +347,11 @@ replayed through the library's repair first (a note says what it changed).)doc")
             return rows_array<uint32_t>(ss::decode_triangle_strip(idx));
         },
         py::arg("indices"), "Decode GL_TRIANGLE_STRIP indices into (t, 3) triangles (degenerate ones skipped).");
+    m.def("read", &read_mesh, py::arg("path"), py::arg("format") = py::none(),
+          R"doc(Read a mesh file (.obj, .off, .ply, .stl, as the CLI does; or "builtin:genus2").
+
+format: "obj", "off", "ply" or "stl" when the name does not tell (e.g. "/dev/stdin").
+Returns (V, F): V (n, 3) float64 vertices in file order, F (m, 3) uint32 triangles (0-based;
+polygons fan-triangulated; STL corners welded). Raises ValueError with the CLI's message for a
+missing, unreadable or malformed file.)doc");
 }

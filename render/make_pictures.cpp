@@ -2,6 +2,7 @@
 // `singlestrip render`: strip -> result PLY (+ cycles JSON, constraints file) -> run_render_command.
 //
 //   singlestrip_pictures <dir with fandisk.off, head.off, eight.off> <out dir>
+// scripts/pictures builds and runs it on Debian's libcgal-demo meshes, writing docs/img/.
 //
 // The intermediate files are kept in <out dir>/render_work/ (handy for the README commands).
 #include <cmath>
@@ -36,6 +37,9 @@ struct Picture {
     /// Fixed request (the README's worked example) instead of the generated constraint path.
     std::string constraints_file;
     std::optional<uint32_t> source, target;
+    /// The room: `singlestrip render`'s defaults (a flat mesh seen from above) and the route.
+    bool default_view = false;
+    bool route = false;
 };
 
 /// Shortest vertex path (edge lengths) from a to b: the constraint polyline of the example.
@@ -112,6 +116,9 @@ void make(const Picture& p, const fs::path& meshes, const fs::path& out) {
     args.input = ply.string();
     args.output = (out / ("render_" + p.name + ".png")).string();
     args.view = p.view;
+    args.auto_view = p.default_view;
+    args.route = p.route;
+    if (p.route) args.style.bands = 3;  // the route is long: repeat the hues so neighbours differ
     args.style.width = 900;
     args.style.height = 700;
     render::run_render_command(args);
@@ -128,10 +135,10 @@ int main(int argc, char** argv) {
         return 2;
     }
     const std::vector<Picture> pictures = {
-        {"fandisk.off", "fandisk", {40, 30, false}, false, false, {}, {}, {}},
-        {"head.off", "head", {200, 10, false}, true, false, {}, {}, {}},
-        {"eight.off", "eight", {90, 60, false}, true, false, {}, {}, {}},
-        {"elephant.off", "constrained", {270, 15, true}, false, true, {}, {}, {}},
+        {"fandisk.off", "fandisk", {40, 30, false}, false, false, {}, {}, {}, false, false},
+        {"head.off", "head", {200, 10, false}, true, false, {}, {}, {}, false, false},
+        {"eight.off", "eight", {90, 60, false}, true, false, {}, {}, {}, false, false},
+        {"elephant.off", "constrained", {270, 15, true}, false, true, {}, {}, {}, false, false},
         // README worked example: examples/room with its walls, --source 0 --target 650.
         {std::string(SINGLESTRIP_SOURCE_DIR) + "/examples/room/room.off",
          "room",
@@ -140,7 +147,9 @@ int main(int argc, char** argv) {
          false,
          std::string(SINGLESTRIP_SOURCE_DIR) + "/examples/room/walls.txt",
          0u,
-         650u},
+         650u,
+         true,
+         true},
     };
     int rc = 0;
     for (const Picture& p : pictures) {

@@ -17,8 +17,10 @@
 #include "singlestrip/cycles.hpp"
 #include "singlestrip/encode.hpp"
 #include "singlestrip/errors.hpp"
+#include "singlestrip/gltf.hpp"
 #include "singlestrip/io.hpp"
 #include "singlestrip/pipeline.hpp"
+#include "singlestrip/route.hpp"
 #include "singlestrip/strip.hpp"
 #include "singlestrip/verify.hpp"
 
@@ -151,6 +153,14 @@ std::array<float, 3> ramp(double t) {
             stops[i][2] * (1 - a) + stops[i + 1][2] * a};
 }
 
+/// Position in the ramp of a face at `t` in [0, 1] along the strip, with the ramp repeated
+/// `bands` times (saw-tooth; the last face still ends on red).
+double band_position(double t, int bands) {
+    if (bands <= 1 || t >= 1.0) return t;
+    const double x = t * bands;
+    return x - std::floor(x);
+}
+
 std::string lower(std::string s) {
     for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     return s;
@@ -183,8 +193,21 @@ void draw_overlays(const Overlays& o, const Style& st, int scale, float alpha) {
         }
         glEnd();
     }
+    if (o.route.size() >= 2) {
+        glColor4f(0.1f, 0.1f, 0.1f, alpha);
+        glLineWidth(std::max(1.0f, st.line_width * 0.5f) * static_cast<float>(scale));
+        glBegin(GL_LINE_STRIP);
+        for (const Point3& p : o.route) glVertex3d(p[0], p[1], p[2]);
+        glEnd();
+    }
     glPointSize(st.point_size * static_cast<float>(scale));
     glBegin(GL_POINTS);
+    if (!o.route.empty()) {  // route start green, end red, like source and target
+        glColor4f(0.0f, 0.65f, 0.1f, alpha);
+        glVertex3d(o.route.front()[0], o.route.front()[1], o.route.front()[2]);
+        glColor4f(0.9f, 0.0f, 0.0f, alpha);
+        glVertex3d(o.route.back()[0], o.route.back()[1], o.route.back()[2]);
+    }
     if (o.source) {
         glColor4f(0.0f, 0.65f, 0.1f, alpha);
         glVertex3d((*o.source)[0], (*o.source)[1], (*o.source)[2]);
@@ -233,7 +256,7 @@ Image render_strip(const std::vector<Point3>& points, const std::vector<uint32_t
             const size_t i = k - 2;
             const uint32_t a = s[i], b = s[i + 1], c = s[i + 2];
             if (a != b && b != c && a != c) {
-                col = ramp(static_cast<double>(ordinal++) / denom);
+                col = ramp(band_position(static_cast<double>(ordinal++) / denom, style.bands));
                 if (style.light) {
                     const Triangle t = (i % 2 == 0) ? Triangle{a, b, c} : Triangle{b, a, c};
                     const Vec n = normalized(cross(sub(points[t[1]], points[t[0]]), sub(points[t[2]], points[t[0]])));
@@ -353,6 +376,10 @@ struct Drawable {
 };
 
 Drawable read_result(const RenderArgs& a) {
+    if (is_gltf_path(a.input))
+        throw InputError(a.input +
+                         ": render cannot read a glTF result back (its float32 positions are not the strip's); render the .ply, "
+                         ".obj or .off result, or the input mesh with --engine");
     OutputMesh m = read_output_mesh(a.input);
     if (m.faces.empty()) throw InputError(a.input + ": no faces to render");
     // encode_triangle_strip() treats a broken sequence as a bug; for a user file it is bad input.
@@ -377,9 +404,10 @@ Drawable read_result(const RenderArgs& a) {
 Drawable strip_input(const RenderArgs& a) {
     PipelineOptions o;
     o.strip.engine = *a.engine;
-    o.strip.source = a.source;
-    o.strip.target = a.target;
+    if (a.source) o.strip.source = from_index_base(*a.source, a.index_base, "--source");
+    if (a.target) o.strip.target = from_index_base(*a.target, a.index_base, "--target");
     o.constraints_file = a.constraints;
+    o.index_base = a.index_base;
     o.cycles = a.with_cycles;
     o.name = a.input;
     PipelineResult r = stripify(read_input(a.input), o);
@@ -388,6 +416,12 @@ Drawable strip_input(const RenderArgs& a) {
     d.indices = std::move(r.indices);
     if (r.cycles) d.cycles = std::move(r.cycles->cycles);
     return d;
+}
+
+std::vector<Point3> route_polyline(const StripArrays& arrays) {
+    std::vector<Point3> pts;
+    for (const RoutePoint& p : strip_route(arrays).points) pts.push_back(p.position);
+    return pts;
 }
 
 Overlays overlays_of(const RenderArgs& a, const Drawable& d) {
@@ -402,19 +436,37 @@ Overlays overlays_of(const RenderArgs& a, const Drawable& d) {
         ov.closed_polylines.push_back(cycle_polyline(d.arrays, d.cycles[c]));
     }
     if (a.constraints)
-        for (const auto& [u, v] : read_constraints(*a.constraints, nv)) ov.segments.emplace_back(pts[u], pts[v]);
+        for (const auto& [u, v] : read_constraints_based(*a.constraints, nv, a.index_base)) ov.segments.emplace_back(pts[u], pts[v]);
     auto vertex = [&](uint32_t v, const char* what) {
-        if (v >= nv)
+        const uint32_t i = from_index_base(v, a.index_base, std::string("--") + what);
+        if (i >= nv)
             throw RequestError(std::string("--") + what + " " + std::to_string(v) + " is out of range (" + a.input + " has " +
-                               std::to_string(nv) + " vertices)");
-        return pts[v];
+                               std::to_string(nv) + " vertices, numbered from " + std::to_string(a.index_base) + ")");
+        return pts[i];
     };
+    if (a.route) ov.route = route_polyline(d.arrays);
     if (a.source) ov.source = vertex(*a.source, "source");
     if (a.target) ov.target = vertex(*a.target, "target");
     return ov;
 }
 
 }  // namespace
+
+View auto_view(const std::vector<Point3>& points) {
+    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (const Point3& p : points)
+        for (int k = 0; k < 3; ++k)
+            if (std::isfinite(p[k])) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
+    const double ext[3] = {hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]};
+    const double big = std::max({ext[0], ext[1], ext[2]});
+    View v;
+    if (!(big > 0)) return v;
+    // Seen from above the plane, the first remaining axis to the right.
+    if (ext[2] <= 1e-9 * big) return View{0.0, 90.0, true};  // x right, y up
+    if (ext[1] <= 1e-9 * big) return View{0.0, 90.0, false};
+    if (ext[0] <= 1e-9 * big) return View{0.0, 0.0, false};
+    return v;
+}
 
 int run_render_command(const RenderArgs& a) {
     const std::string out = lower(a.output);
@@ -423,7 +475,7 @@ int run_render_command(const RenderArgs& a) {
     if (!a.engine && a.with_cycles) throw RequestError("--with-cycles needs --engine (the input is then stripped first)");
     const Drawable d = a.engine ? strip_input(a) : read_result(a);
     const Overlays ov = overlays_of(a, d);
-    write_png(a.output, render_strip(d.arrays.points, d.indices, ov, a.view, a.style));
+    write_png(a.output, render_strip(d.arrays.points, d.indices, ov, a.auto_view ? auto_view(d.arrays.points) : a.view, a.style));
     return kExitOk;
 }
 

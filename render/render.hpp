@@ -5,7 +5,8 @@
 // of strip triangle i is index i+2), so each face gets the colour of its position along the
 // strip and a headlight Lambert term from its own geometric normal. Overlays: fundamental
 // cycles as closed polylines (centroids and shared-edge midpoints, cycles.hpp), constraint edges
-// as lines, source (green) and target (red) as points; hidden overlay parts are drawn faintly.
+// as lines, source (green) and target (red) as points, optionally the strip's route as a line
+// with its start and end marked; hidden overlay parts are drawn faintly.
 // PNG files are written with libpng, atomically (temporary + rename).
 //
 // Built only when OSMesa and libpng are found (render/CMakeLists.txt); then the targets that
@@ -51,6 +52,9 @@ struct Style {
     float line_width = 3.0f;
     float point_size = 14.0f;
     bool light = true;  ///< headlight Lambert shading; off = flat strip colours
+    /// The blue-to-red ramp is repeated this many times along the strip (saw-tooth), so that on
+    /// a long strip neighbouring parts get clearly different hues. At least 1.
+    int bands = 1;
 };
 
 /// What to draw on top of the strip.
@@ -59,7 +63,14 @@ struct Overlays {
     std::vector<std::pair<Point3, Point3>> segments;    ///< constraint edges
     std::optional<Point3> source;
     std::optional<Point3> target;
+    /// The strip's route (route.hpp), drawn as a dark open polyline over the surface with its
+    /// first point marked green and its last red.
+    std::vector<Point3> route;
 };
+
+/// The default view of `points`: a mesh flat in z, y or x (extent below 1e-9 of the largest) is
+/// seen from straight above its plane; any other from azimuth 35, elevation 25, +y up. O(V).
+View auto_view(const std::vector<Point3>& points);
 
 /// Renders the strip. `strip_indices` is a GL_TRIANGLE_STRIP index sequence into `points`.
 /// \throw RequestError if an index is out of range or the sizes are not positive;
@@ -96,6 +107,10 @@ struct RenderArgs {
     /// (pipeline.hpp), `constraints`, `source` and `target` being the strip's request too.
     std::optional<StripEngine> engine;
     bool with_cycles = false;  ///< with `engine`: draw the computed cycles
+    bool route = false;        ///< draw the strip's route (route.hpp)
+    /// Vertex numbers in `constraints`, `source`, `target` start at this (0 or 1).
+    uint32_t index_base = 0;
+    bool auto_view = true;  ///< true: `view` is ignored and auto_view() used
     View view;
     Style style;
 };
@@ -103,7 +118,7 @@ struct RenderArgs {
 /// `singlestrip render`: reads the result (read_output_mesh) and re-encodes its faces with
 /// encode_triangle_strip, or with `engine` strips the input mesh (stripify()); renders, writes
 /// the PNG. Returns kExitOk.
-/// \throw InputError (unreadable files, an invalid mesh), RequestError (vertex out of range,
+/// \throw InputError (unreadable files, an invalid mesh, a glTF result), RequestError (vertex out of range,
 ///        output not .png, --cycles with an engine, an impossible strip request), OutputError,
 ///        InternalError — for the CLI's usual mapping to exit codes.
 int run_render_command(const RenderArgs& args);

@@ -22,6 +22,7 @@
 #include "singlestrip/io.hpp"
 #include "singlestrip/pipeline.hpp"
 #include "singlestrip/report.hpp"
+#include "singlestrip/route.hpp"
 
 namespace singlestrip {
 namespace {
@@ -70,6 +71,10 @@ void write_outputs(const BatchItem& item, const BatchOptions& o, const std::stri
             write_cycles_json(base + ".cycles.json", *r.cycles);
             written.push_back(base + ".cycles.json");
         }
+        if (o.write_path) {
+            write_route(base + ".route.csv", strip_route(r.arrays));
+            written.push_back(base + ".route.csv");
+        }
     } catch (...) {
         for (const auto& p : written) {
             std::error_code ec;
@@ -117,7 +122,7 @@ void write_report(BatchItem& item, const BatchOptions& o, const PipelineResult* 
     const PipelineOptions requested = pipeline_options(o, item.input);
     ReportInput rep;
     rep.input = item.input;
-    rep.output = item.output;
+    rep.output = item.ok ? item.output : std::string();  // a failed file has no result to name
     rep.options = result ? nullptr : &requested;
     rep.result = result;
     rep.outcome = RunOutcome{item.ok, item.exit_code, item.error, item.seconds};
@@ -146,14 +151,30 @@ void draw_progress(size_t done, size_t total, size_t failed, const std::string& 
     std::fflush(stderr);
 }
 
+/// Every file the run may write, checked against the inputs before any work.
+void refuse_batch_overwrites(const std::vector<std::string>& files, const std::vector<BatchItem>& items,
+                             const std::vector<std::string>& bases, const BatchOptions& o) {
+    std::vector<std::pair<std::string, std::string>> inputs, outputs;
+    for (const auto& f : files)
+        if (!is_builtin_input(f)) inputs.emplace_back("input", f);
+    for (size_t i = 0; i < items.size(); ++i) {
+        outputs.emplace_back("result", items[i].output);
+        outputs.emplace_back("report", items[i].report);
+        if (o.write_indices) outputs.emplace_back("indices", bases[i] + ".indices.txt");
+        if (o.cycles) outputs.emplace_back("cycles", bases[i] + ".cycles.json");
+        if (o.write_path) outputs.emplace_back("route", bases[i] + ".route.csv");
+    }
+    refuse_overwrites(inputs, outputs);
+}
+
 }  // namespace
 
 BatchResult run_batch_files(const std::vector<std::string>& files, const BatchOptions& o) {
     std::string fmt = o.format;
     std::transform(fmt.begin(), fmt.end(), fmt.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     if (!fmt.empty() && fmt[0] == '.') fmt.erase(0, 1);
-    if (fmt != "ply" && fmt != "obj" && fmt != "off" && fmt != "glb" && fmt != "gltf")
-        throw RequestError("batch: unknown output format '" + o.format + "' (ply, obj, off, glb, gltf)");
+    if (fmt != "ply" && fmt != "obj" && fmt != "off" && fmt != "stl" && fmt != "glb" && fmt != "gltf")
+        throw RequestError("batch: unknown output format '" + o.format + "' (ply, obj, off, stl, glb, gltf)");
     {
         std::error_code ec;
         fs::create_directories(o.out_dir.empty() ? fs::path(".") : fs::path(o.out_dir), ec);
@@ -164,16 +185,21 @@ BatchResult run_batch_files(const std::vector<std::string>& files, const BatchOp
     BatchResult res;
     res.items.resize(files.size());
     std::vector<std::string> bases(files.size());
-    std::map<std::string, int> seen;
+    std::map<std::string, std::pair<int, size_t>> seen;  // stem -> uses, first input
     for (size_t i = 0; i < files.size(); ++i) {
         std::string stem = stem_of(files[i]);
-        const int n = ++seen[stem];
-        if (n > 1) stem += "-" + std::to_string(n);
+        auto [it, fresh] = seen.try_emplace(stem, 0, i);
+        const int n = ++it->second.first;
+        if (n > 1) {
+            stem += "-" + std::to_string(n);
+            res.items[i].renamed_from = files[it->second.second];
+        }
         bases[i] = (fs::path(o.out_dir) / stem).string();
         res.items[i].input = files[i];
         res.items[i].output = bases[i] + "." + fmt;
         res.items[i].report = bases[i] + ".report.json";
     }
+    refuse_batch_overwrites(files, res.items, bases, o);
 
     const bool show = o.progress && isatty(fileno(stderr)) && !files.empty();
     std::atomic<size_t> next{0};
@@ -235,6 +261,10 @@ std::string batch_summary_table(const BatchResult& r) {
                   static_cast<unsigned long long>(tout), static_cast<unsigned long long>(tsplit), static_cast<unsigned long long>(tidx),
                   tsec);
     o << line;
+    for (const auto& it : r.items)
+        if (!it.renamed_from.empty())
+            o << "note: " << it.input << " has the same name as " << it.renamed_from << ": "
+              << (it.ok ? "its results are " + it.output + " and " + it.report : "its report is " + it.report) << '\n';
     for (const auto& it : r.items)
         if (!it.ok) o << "FAILED " << it.input << " (exit " << it.exit_code << "): " << it.error << '\n';
     return o.str();

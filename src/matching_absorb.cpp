@@ -59,7 +59,7 @@ int MatchingBuilder::swaps_around(std::initializer_list<uint32_t> faces) const {
 class PathGrower {
 public:
     PathGrower(MatchingBuilder& b, uint32_t loops) : b_(b), path_(b.mesh_.num_faces()), loops_(loops) {}
-    void run();
+    void run(uint32_t path_root);
 
 private:
     struct Take {
@@ -69,10 +69,10 @@ private:
     struct Rotation {
         uint32_t side, link, dropped, from;
     };
-    // A split join adds two triangles (two GL indices) and may add swaps of its own: a loop is
-    // worth taking in while the turns changed cost fewer than 4 swaps (best of 2, 4 and unbounded
-    // on the libcgal-demo meshes; docs/algorithm.md).
-    static constexpr int kSplitCost = 4;
+    // A split join adds two triangles (two GL indices) and often swaps around its four faces: a
+    // loop is taken in while the turns changed cost fewer than 5 swaps (the best of 2, 3, 4, 5 and
+    // unbounded on the libcgal-demo meshes; docs/algorithm.md).
+    static constexpr int kSplitCost = 5;
     static constexpr uint64_t kWindow = 4096;  ///< rotations without a loop taken in, then stop
 
     MatchingBuilder& b_;
@@ -83,7 +83,7 @@ private:
     std::vector<Rotation> trial_;  ///< rotations since the last loop taken in
     int trial_cost_ = 0;           ///< swaps they added
 
-    void start();
+    void start(uint32_t path_root);
     [[nodiscard]] Take best_take(uint32_t side);
     void take(uint32_t side, const Take& t);
     void rotate(uint32_t side, uint32_t h);
@@ -92,8 +92,29 @@ private:
     bool take_all();
 };
 
-// The path starts as the first loop, cut open at its first crossed edge.
-void PathGrower::start() {
+// The path starts as the one path there is, else as the first loop cut open at its first
+// crossed edge.
+void PathGrower::start(uint32_t path_root) {
+    const uint32_t nf = b_.mesh_.num_faces();
+    if (path_root != kNone) {
+        uint32_t end = kNone;
+        for (uint32_t f = 0; f < nf && end == kNone; ++f)
+            if (b_.find(b_.sid_[f]) == path_root && b_.hdeg(f) < 2) end = f;
+        std::vector<uint32_t> seq{end};
+        for (uint32_t prev = kNone, f = end;;) {
+            uint32_t next = kNone;
+            for (uint32_t h = 3 * f; h < 3 * f + 3; ++h)
+                if (b_.used_[h] && b_.mesh_.neighbor(h) != prev) next = b_.mesh_.neighbor(h);
+            if (next == kNone) break;
+            seq.push_back(next);
+            prev = f, f = next;
+        }
+        root_ = path_root;
+        path_.append(seq);
+        ends_[0] = seq.front();
+        ends_[1] = seq.back();
+        return;
+    }
     uint32_t cut = kNone;
     for (uint32_t h = 0; cut == kNone; ++h)
         if (b_.used_[h]) cut = h;
@@ -178,8 +199,8 @@ bool PathGrower::take_all() {
     return took;
 }
 
-void PathGrower::run() {
-    start();
+void PathGrower::run(uint32_t path_root) {
+    start(path_root);
     const uint32_t nf = b_.mesh_.num_faces();
     uint64_t rng = 0x9e3779b97f4a7c15ULL, budget = 16ULL * nf, idle = 0;  // xorshift: reproducible
     while (loops_ > 0 && budget > 0 && idle < kWindow) {
@@ -198,13 +219,17 @@ void PathGrower::run() {
 
 void MatchingBuilder::absorb_loops() {
     if (num_pins_ > 0 || mesh_.num_faces() < 2) return;
-    uint32_t loops = 0;
-    for (uint32_t s = 0; s < uf_.size(); ++s)
-        if (find(s) == s) {
-            if (!cycle_[s] || pinned_[s]) return;
+    uint32_t loops = 0, path = kNone;
+    for (uint32_t s = 0; s < uf_.size(); ++s) {
+        if (find(s) != s) continue;
+        if (cycle_[s]) {
             ++loops;
+        } else {
+            if (path != kNone) return;  // two paths could only be joined end to end
+            path = s;
         }
-    if (loops >= 2) PathGrower(*this, loops).run();
+    }
+    if (loops >= (path == kNone ? 2 : 1)) PathGrower(*this, loops).run(path);
 }
 
 }  // namespace singlestrip::matching

@@ -67,6 +67,8 @@ private:
     static constexpr uint32_t kMinBridgeSide = 16;
     void split_bridges();
     bool chain_reaches_branch(uint32_t f, uint32_t from) const;
+    void match_fans();
+    static constexpr uint32_t kFanValence = 32;  ///< fans of this many faces or more: one loop
     void match_patterned();
     bool augment_from(uint32_t u, std::vector<uint32_t>& stamp, uint32_t mark, size_t budget);
     void settle_leftovers();

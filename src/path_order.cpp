@@ -107,9 +107,9 @@ void PathOrder::prepend(const std::vector<uint32_t>& items) {
 }
 
 uint32_t PathOrder::position(uint32_t x) {
-    std::vector<uint32_t> up;  // flips above x must be pushed before sizes say where x is
-    for (uint32_t y = x; y != kNil; y = parent_[y]) up.push_back(y);
-    for (std::size_t i = up.size(); i-- > 0;) push(up[i]);
+    up_.clear();  // flips above x must be pushed before sizes say where x is
+    for (uint32_t y = x; y != kNil; y = parent_[y]) up_.push_back(y);
+    for (std::size_t i = up_.size(); i-- > 0;) push(up_[i]);
     uint32_t pos = left_[x] == kNil ? 0 : size_[left_[x]];
     for (uint32_t y = x; parent_[y] != kNil; y = parent_[y]) {
         const uint32_t p = parent_[y];

@@ -38,6 +38,7 @@ private:
     std::vector<uint32_t> left_, right_, parent_, size_;
     std::vector<uint8_t> flip_;  ///< the subtree's order is reversed (not yet pushed down)
     uint32_t root_ = kNil;
+    std::vector<uint32_t> up_;  ///< scratch of position()
 
     [[nodiscard]] static uint32_t priority(uint32_t x);
     void push(uint32_t x);

@@ -2,6 +2,7 @@
 #include "singlestrip/pipeline.hpp"
 
 #include <chrono>
+#include <string>
 #include <utility>
 
 #include "components.hpp"
@@ -32,10 +33,16 @@ void enter(PipelineStage* stage, PipelineStage s) {
     if (stage) *stage = s;
 }
 
-void append_constraint_file(const std::string& path, const TriangleSoup& soup, StripOptions& strip) {
+void append_constraint_file(const std::string& path, uint32_t index_base, const TriangleSoup& soup, StripOptions& strip) {
     std::vector<uint32_t> lines;
-    const auto pairs = read_constraints(path, static_cast<uint32_t>(soup.points.size()), &lines);
-    check_constraint_edges(path, pairs, lines, soup);
+    const auto pairs = read_constraints_based(path, static_cast<uint32_t>(soup.points.size()), index_base, &lines);
+    try {
+        check_constraint_edges(path, pairs, lines, soup);
+    } catch (const RequestError& e) {
+        if (index_base == 0) throw;
+        // The check names the pair 0-based; say so rather than show numbers the file lacks.
+        throw RequestError(std::string(e.what()) + " (vertex numbers counted from 0 here: add 1 for the file's numbering)");
+    }
     strip.constraint_edges.insert(strip.constraint_edges.end(), pairs.begin(), pairs.end());
 }
 
@@ -161,7 +168,7 @@ PipelineResult stripify(TriangleSoup soup, const PipelineOptions& options, Pipel
     r.input = prepare_soup(std::move(soup), PrepareOptions{options.orient || options.repair}, options.name);
     if (options.constraints_file) {
         enter(stage, PipelineStage::Constraints);
-        append_constraint_file(*options.constraints_file, r.input, r.options.strip);
+        append_constraint_file(*options.constraints_file, options.index_base, r.input, r.options.strip);
     }
     uint32_t count = 0;
     const std::vector<uint32_t> comp = face_components(r.input, &count);

@@ -190,6 +190,26 @@ void MatchingBuilder::set_quotas() {
     }
 }
 
+// Around a vertex of high valence the turn pattern pairs fan faces across their spokes, and each
+// pair leaves a small loop through the faces beyond (a cone's apex: one loop per two faces). Fan
+// faces matched across their outer edges instead cross every spoke: the fan becomes one loop
+// (with a swap per face, as any strip round a fan needs).
+void MatchingBuilder::match_fans() {
+    const uint32_t nh = mesh_.num_halfedges();
+    std::vector<uint32_t> valence(mesh_.num_vertices(), 0);
+    for (uint32_t h = 0; h < nh; ++h) ++valence[mesh_.from(h)];
+    for (uint32_t h = 0; h < nh; ++h) {
+        if (valence[mesh_.from(h)] < kFanValence) continue;
+        const uint32_t outer = Mesh::next(h), f = Mesh::face(h);
+        if (!passable(outer) || matched_[outer] || quota_[f] == 0) continue;
+        const uint32_t g = mesh_.neighbor(outer);
+        if (quota_[g] == 0) continue;
+        set_pair(matched_, outer, 1);
+        --quota_[f];
+        --quota_[g];
+    }
+}
+
 // Greedy matching carried face to face in breadth-first order: across a crossed edge (u, v),
 // if this face's matched edge touches u, the neighbour's should touch v — then the two turns
 // alternate and the GL strip needs no swap there.
@@ -368,6 +388,7 @@ StripResult MatchingBuilder::run() {
     split_ears();
     split_bridges();
     set_quotas();
+    match_fans();
     match_patterned();
     settle_leftovers();
     label_structures();

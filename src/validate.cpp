@@ -73,6 +73,14 @@ struct Analysis {
 
     explicit Analysis(const TriangleSoup& s) : soup(s), nf(s.triangles.size()), nv(s.points.size()) { run(); }
 
+    /// Face number for messages: the triangle, and for a file with polygons the file's polygon
+    /// (face numbers count triangles after fan triangulation; the user knows the file's faces).
+    std::string fid(std::size_t f) const {
+        const auto& sp = soup.source_polygon;
+        const bool polygons = sp.size() == nf && nf > 0 && sp.back() != nf - 1;
+        return std::to_string(f) + (polygons ? " (polygon " + std::to_string(sp[f]) + " of the file)" : std::string());
+    }
+
     uint32_t from(uint32_t h) const { return soup.triangles[h / 3][h % 3]; }
     uint32_t to(uint32_t h) const { return soup.triangles[h / 3][(h % 3 + 1) % 3]; }
 
@@ -83,7 +91,7 @@ struct Analysis {
             const auto& t = soup.triangles[f];
             for (uint32_t v : t)
                 if (v >= nv) {
-                    out_of_range.add("face " + std::to_string(f) + " references vertex " + std::to_string(v) + " but there are only " +
+                    out_of_range.add("face " + fid(f) + " references vertex " + std::to_string(v) + " but there are only " +
                                      std::to_string(nv) + " vertices");
                     usable[f] = 0;
                     break;
@@ -91,8 +99,8 @@ struct Analysis {
             if (!usable[f]) continue;
             for (uint32_t v : t) used[v] = 1;
             if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) {
-                repeated.add("face " + std::to_string(f) + " (" + std::to_string(t[0]) + ", " + std::to_string(t[1]) + ", " +
-                             std::to_string(t[2]) + ") repeats a vertex");
+                repeated.add("face " + fid(f) + " (" + std::to_string(t[0]) + ", " + std::to_string(t[1]) + ", " + std::to_string(t[2]) +
+                             ") repeats a vertex");
                 usable[f] = 0;
             }
         }
@@ -188,14 +196,13 @@ struct Analysis {
             twin[b[1]] = b[0];
             if (from(b[0]) == from(b[1])) {
                 oriented = false;
-                inconsistent.add(edge_name(lo, hi) + ": faces " + std::to_string(b[0] / 3) + " and " + std::to_string(b[1] / 3) +
-                                 " both run from " + std::to_string(from(b[0])) + " to " + std::to_string(to(b[0])) +
-                                 " (inconsistent orientation)");
+                inconsistent.add(edge_name(lo, hi) + ": faces " + fid(b[0] / 3) + " and " + fid(b[1] / 3) + " both run from " +
+                                 std::to_string(from(b[0])) + " to " + std::to_string(to(b[0])) + " (inconsistent orientation)");
             }
         } else {
             ++non_manifold_edges;
             std::string fs;
-            for (auto i = b; i < e; ++i) fs += (i > b ? ", " : "") + std::to_string(*i / 3);
+            for (auto i = b; i < e; ++i) fs += (i > b ? ", " : "") + fid(*i / 3);
             nm_edge.add(edge_name(lo, hi) + " is shared by " + std::to_string(n) + " faces (" + fs + "); at most 2 are allowed");
         }
     }
@@ -217,7 +224,7 @@ struct Analysis {
             while (j < by_third.size() && by_third[j].first == by_third[i].first) ++j;
             if (j - i > 1) {
                 std::string faces;
-                for (std::size_t k = i; k < j; ++k) faces += (k > i ? ", " : "") + std::to_string(by_third[k].second);
+                for (std::size_t k = i; k < j; ++k) faces += (k > i ? ", " : "") + fid(by_third[k].second);
                 duplicate.add("faces " + faces + " are duplicates (same vertices " + std::to_string(lo) + ", " + std::to_string(hi) + ", " +
                               std::to_string(by_third[i].first) + ")");
             }
@@ -267,10 +274,10 @@ struct Analysis {
                     } else if (flip[g] != want && !conflict) {
                         conflict = true;
                         orientable = false;
-                        non_orientable.add("the surface containing face " + std::to_string(s) +
-                                           " is not orientable (Moebius-like): orientations propagated from face " + std::to_string(s) +
+                        non_orientable.add("the surface containing face " + fid(s) +
+                                           " is not orientable (Moebius-like): orientations propagated from face " + fid(s) +
                                            " disagree across " + edge_name(std::min(from(h), to(h)), std::max(from(h), to(h))) +
-                                           " between faces " + std::to_string(f) + " and " + std::to_string(g));
+                                           " between faces " + fid(f) + " and " + fid(g));
                     }
                 }
             }

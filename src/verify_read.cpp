@@ -97,8 +97,8 @@ void check_indices(const std::string& path, const OutputMesh& m) {
     for (size_t f = 0; f < m.faces.size(); ++f)
         for (uint32_t v : m.faces[f])
             if (v >= m.points.size())
-                fail(path, "face " + std::to_string(f) + " references vertex " + std::to_string(v) +
-                               " but the file has only " + std::to_string(m.points.size()) + " vertices");
+                fail(path, "face " + std::to_string(f) + " references vertex " + std::to_string(v) + " but the file has only " +
+                               std::to_string(m.points.size()) + " vertices");
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -107,24 +107,41 @@ void check_indices(const std::string& path, const OutputMesh& m) {
 enum class PlyType { I8, U8, I16, U16, I32, U32, F32, F64 };
 
 bool ply_type(std::string_view s, PlyType& t) {
-    if (s == "char" || s == "int8") t = PlyType::I8;
-    else if (s == "uchar" || s == "uint8") t = PlyType::U8;
-    else if (s == "short" || s == "int16") t = PlyType::I16;
-    else if (s == "ushort" || s == "uint16") t = PlyType::U16;
-    else if (s == "int" || s == "int32") t = PlyType::I32;
-    else if (s == "uint" || s == "uint32") t = PlyType::U32;
-    else if (s == "float" || s == "float32") t = PlyType::F32;
-    else if (s == "double" || s == "float64") t = PlyType::F64;
-    else return false;
+    if (s == "char" || s == "int8")
+        t = PlyType::I8;
+    else if (s == "uchar" || s == "uint8")
+        t = PlyType::U8;
+    else if (s == "short" || s == "int16")
+        t = PlyType::I16;
+    else if (s == "ushort" || s == "uint16")
+        t = PlyType::U16;
+    else if (s == "int" || s == "int32")
+        t = PlyType::I32;
+    else if (s == "uint" || s == "uint32")
+        t = PlyType::U32;
+    else if (s == "float" || s == "float32")
+        t = PlyType::F32;
+    else if (s == "double" || s == "float64")
+        t = PlyType::F64;
+    else
+        return false;
     return true;
 }
 
 size_t ply_size(PlyType t) {
     switch (t) {
-        case PlyType::I8: case PlyType::U8: return 1;
-        case PlyType::I16: case PlyType::U16: return 2;
-        case PlyType::I32: case PlyType::U32: case PlyType::F32: return 4;
-        case PlyType::F64: return 8;
+        case PlyType::I8:
+        case PlyType::U8:
+            return 1;
+        case PlyType::I16:
+        case PlyType::U16:
+            return 2;
+        case PlyType::I32:
+        case PlyType::U32:
+        case PlyType::F32:
+            return 4;
+        case PlyType::F64:
+            return 8;
     }
     return 1;
 }
@@ -145,8 +162,7 @@ struct PlyElement {
 /// Sequential value source over either ASCII tokens or binary bytes.
 class PlySource {
 public:
-    PlySource(const std::string& path, std::string_view data, int format)
-        : path_(path), data_(data), format_(format) {}
+    PlySource(const std::string& path, std::string_view data, int format) : path_(path), data_(data), format_(format) {}
 
     double next(PlyType t, const std::string& where) {
         if (format_ == 0) return next_ascii(where);
@@ -158,14 +174,46 @@ public:
         const bool file_le = format_ == 1;
         if (file_le != (std::endian::native == std::endian::little)) std::reverse(b, b + n);
         switch (t) {
-            case PlyType::I8: { int8_t x; std::memcpy(&x, b, 1); return x; }
-            case PlyType::U8: { uint8_t x; std::memcpy(&x, b, 1); return x; }
-            case PlyType::I16: { int16_t x; std::memcpy(&x, b, 2); return x; }
-            case PlyType::U16: { uint16_t x; std::memcpy(&x, b, 2); return x; }
-            case PlyType::I32: { int32_t x; std::memcpy(&x, b, 4); return x; }
-            case PlyType::U32: { uint32_t x; std::memcpy(&x, b, 4); return x; }
-            case PlyType::F32: { float x; std::memcpy(&x, b, 4); return x; }
-            case PlyType::F64: { double x; std::memcpy(&x, b, 8); return x; }
+            case PlyType::I8: {
+                int8_t x;
+                std::memcpy(&x, b, 1);
+                return x;
+            }
+            case PlyType::U8: {
+                uint8_t x;
+                std::memcpy(&x, b, 1);
+                return x;
+            }
+            case PlyType::I16: {
+                int16_t x;
+                std::memcpy(&x, b, 2);
+                return x;
+            }
+            case PlyType::U16: {
+                uint16_t x;
+                std::memcpy(&x, b, 2);
+                return x;
+            }
+            case PlyType::I32: {
+                int32_t x;
+                std::memcpy(&x, b, 4);
+                return x;
+            }
+            case PlyType::U32: {
+                uint32_t x;
+                std::memcpy(&x, b, 4);
+                return x;
+            }
+            case PlyType::F32: {
+                float x;
+                std::memcpy(&x, b, 4);
+                return x;
+            }
+            case PlyType::F64: {
+                double x;
+                std::memcpy(&x, b, 8);
+                return x;
+            }
         }
         return 0;
     }
@@ -190,8 +238,7 @@ private:
 };
 
 uint32_t as_index(const std::string& path, double v, const std::string& where) {
-    if (!(v >= 0) || v > 4294967295.0 || v != std::floor(v))
-        fail(path, "bad index value (" + where + ")");
+    if (!(v >= 0) || v > 4294967295.0 || v != std::floor(v)) fail(path, "bad index value (" + where + ")");
     return static_cast<uint32_t>(v);
 }
 
@@ -212,10 +259,14 @@ OutputMesh read_ply(const std::string& path) {
         const std::string where = "header line " + std::to_string(li + 1);
         if (tok[0] == "format") {
             if (tok.size() < 2) fail(path, "bad format line");
-            if (tok[1] == "ascii") format = 0;
-            else if (tok[1] == "binary_little_endian") format = 1;
-            else if (tok[1] == "binary_big_endian") format = 2;
-            else fail(path, "unknown PLY format '" + std::string(tok[1]) + "'");
+            if (tok[1] == "ascii")
+                format = 0;
+            else if (tok[1] == "binary_little_endian")
+                format = 1;
+            else if (tok[1] == "binary_big_endian")
+                format = 2;
+            else
+                fail(path, "unknown PLY format '" + std::string(tok[1]) + "'");
         } else if (tok[0] == "element") {
             long long count = 0;
             if (tok.size() != 3 || !parse_long(tok[2], count) || count < 0) fail(path, "bad element line (" + where + ")");
@@ -332,7 +383,7 @@ OutputMesh read_obj(const std::string& path) {
     const std::string text = slurp(path);
     OutputMesh m;
     std::vector<std::array<long long, 3>> raw;  // 1-based or negative, resolved below
-    std::vector<size_t> nverts_at;               // vertex count when the face was read
+    std::vector<size_t> nverts_at;              // vertex count when the face was read
     const auto lines = split_lines(text);
     for (size_t li = 0; li < lines.size(); ++li) {
         std::string_view line = lines[li];
@@ -369,8 +420,8 @@ OutputMesh read_obj(const std::string& path) {
             long long idx = raw[f][k];
             idx = idx > 0 ? idx - 1 : static_cast<long long>(nverts_at[f]) + idx;
             if (idx < 0 || idx >= static_cast<long long>(m.points.size()))
-                fail(path, "face " + std::to_string(f) + " references vertex " + std::to_string(raw[f][k]) +
-                               " but the file has only " + std::to_string(m.points.size()) + " vertices");
+                fail(path, "face " + std::to_string(f) + " references vertex " + std::to_string(raw[f][k]) + " but the file has only " +
+                               std::to_string(m.points.size()) + " vertices");
             m.faces[f][k] = static_cast<uint32_t>(idx);
         }
     }
@@ -403,8 +454,7 @@ OutputMesh read_off(const std::string& path) {
         counts = rows[r++];
     }
     long long nv = 0, nf = 0;
-    if (counts.size() < 2 || !parse_long(counts[0], nv) || !parse_long(counts[1], nf) || nv < 0 || nf < 0)
-        fail(path, "bad counts line");
+    if (counts.size() < 2 || !parse_long(counts[0], nv) || !parse_long(counts[1], nf) || nv < 0 || nf < 0) fail(path, "bad counts line");
     if (static_cast<size_t>(nv + nf) > rows.size()) fail(path, "truncated file (fewer lines than the counts say)");
     OutputMesh m;
     m.points.resize(static_cast<size_t>(nv));
@@ -441,7 +491,10 @@ OutputMesh read_output_mesh(const std::string& path) {
     if (ext == "ply") return read_ply(path);
     if (ext == "obj") return read_obj(path);
     if (ext == "off") return read_off(path);
-    fail(path, "unknown output extension '" + ext + "' (expected .ply, .obj or .off)");
+    if (ext == "glb" || ext == "gltf" || ext == "stl")
+        fail(path, "a ." + ext + " result cannot be read back exactly (float32 positions" + (ext == "stl" ? ", no shared vertices" : "") +
+                       "); use the .ply, .obj or .off result of the same run");
+    fail(path, "cannot read a result with extension '" + ext + "' (expected .ply, .obj or .off)");
 }
 
 std::vector<uint32_t> read_index_file(const std::string& path) {
@@ -464,8 +517,7 @@ std::vector<std::vector<uint32_t>> read_cycles_file(const std::string& path) {
     } catch (const nlohmann::json::exception& e) {
         fail(path, std::string("not valid JSON: ") + e.what());
     }
-    if (!j.is_object() || !j.contains("cycles") || !j["cycles"].is_array())
-        fail(path, "expected an object with an array \"cycles\"");
+    if (!j.is_object() || !j.contains("cycles") || !j["cycles"].is_array()) fail(path, "expected an object with an array \"cycles\"");
     std::vector<std::vector<uint32_t>> cycles;
     for (size_t c = 0; c < j["cycles"].size(); ++c) {
         const auto& arr = j["cycles"][c];

@@ -221,7 +221,7 @@ TEST(Cli, InvalidInputLeavesNoOutput) {
 
 TEST(Cli, RequestAndOutputErrors) {
     Scratch s("req");
-    CliRun ext = cli("strip " + q(data("tetra.off")) + " -o " + q(s / "o.stl"));
+    CliRun ext = cli("strip " + q(data("tetra.off")) + " -o " + q(s / "o.xyz"));
     EXPECT_EQ(ext.code, 4) << ext.out;
     CliRun seed = cli("strip " + q(data("tetra.off")) + " -o " + q(s / "o.ply") + " --seed-face 4");
     EXPECT_EQ(seed.code, 4) << seed.out;

@@ -261,10 +261,21 @@ TEST(WriteMesh, PlyHasBinaryLayoutWithParent) {
 
 TEST(WriteMesh, UnknownExtensionIsRequestErrorAndWritesNothing) {
     fs::path dir = scratch_dir("ext");
-    const std::string path = (dir / "out.stl").string();
+    const std::string path = (dir / "out.xyz").string();
     EXPECT_THROW(write_strip_mesh(path, kTetraPoints, kTetraFaces, {0, 1, 2, 3}), RequestError);
     EXPECT_THROW(output_format_for("noext"), RequestError);
     EXPECT_FALSE(fs::exists(path));
+    fs::remove_all(dir);
+}
+
+TEST(WriteMesh, BinaryStlReadsBackWelded) {
+    fs::path dir = scratch_dir("stl");
+    const std::string path = (dir / "out.stl").string();
+    write_strip_mesh(path, kTetraPoints, kTetraFaces, {0, 1, 2, 3});
+    EXPECT_EQ(fs::file_size(path), 84u + 50u * kTetraFaces.size());
+    const TriangleSoup back = read_mesh_file(path);
+    EXPECT_EQ(back.points.size(), 4u);
+    EXPECT_EQ(back.triangles.size(), kTetraFaces.size());
     fs::remove_all(dir);
 }
 
@@ -351,4 +362,62 @@ TEST(ReadMeshReal, FandiskAndFormatsFromCgalDemo) {
     EXPECT_EQ(a.triangles.size(), c.triangles.size());
     EXPECT_EQ(mesh_info(c).euler_characteristic, 2);
     EXPECT_EQ(faces_of(a), faces_of(b));
+}
+
+namespace {
+std::string write_scratch(const std::string& tag, const std::string& name, const std::string& bytes) {
+    const fs::path p = scratch_dir(tag) / name;
+    std::ofstream(p, std::ios::binary).write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    return p.string();
+}
+const std::string kSquareVertices = "0 0 0\n1 0 0\n1 1 0\n0 1 0\n2 0 0\n";
+}  // namespace
+
+// PLY `element tristrips` (issue 18): strips separated by -1, odd triangles wound the other way
+// round, triangles with a repeated vertex (the usual way to join strips) skipped.
+TEST(ReadMesh, PlyTristripsAreDecodedWithAlternatingWinding) {
+    const std::string header =
+        "ply\nformat ascii 1.0\nelement vertex 5\nproperty float x\nproperty float y\nproperty float z\n"
+        "element tristrips 1\nproperty list int int vertex_indices\nend_header\n";
+    // Strip 0 1 3 2 (two triangles), restart, strip 4 4 1 2: (4,4,1) is skipped, (1,4,2) is odd.
+    const TriangleSoup s = read_mesh_file(write_scratch("strips", "s.ply", header + kSquareVertices + "9 0 1 3 2 -1 4 4 1 2\n"));
+    const std::vector<Triangle> want = {{0, 1, 3}, {3, 1, 2}, {1, 4, 2}};
+    EXPECT_EQ(s.triangles, want);
+    EXPECT_EQ(s.source_polygon, (std::vector<uint32_t>{0, 1, 2}));
+    EXPECT_TRUE(diagnose_soup(s).empty());
+    // Binary, uint entries: the restart is 2^32-1.
+    std::string b =
+        "ply\nformat binary_little_endian 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+        "element tristrips 1\nproperty list uint uint vertex_indices\nend_header\n";
+    const float v[4][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+    b.append(reinterpret_cast<const char*>(v), sizeof v);
+    const uint32_t list[6] = {5, 0, 1, 3, 0xffffffffu, 2};
+    b.append(reinterpret_cast<const char*>(list), sizeof list);
+    const TriangleSoup t = read_mesh_file(write_scratch("strips", "b.ply", b));
+    EXPECT_EQ(t.triangles, (std::vector<Triangle>{{0, 1, 3}}));
+    const std::string bad = error_of(write_scratch("strips", "bad.ply", header + kSquareVertices + "3 0 1 7\n"));
+    EXPECT_NE(bad.find("tristrips item 0 entry 2 references vertex 7 but the file has only 5 vertices"), std::string::npos) << bad;
+}
+
+// Every reader names what it did not understand when it finds no faces (issue 18).
+TEST(ReadMesh, NoFacesNamesTheElementsAndRecordsNotUnderstood) {
+    const std::string ply =
+        "ply\nformat ascii 1.0\nelement vertex 5\nproperty float x\nproperty float y\nproperty float z\n"
+        "element xyz 1\nproperty list int int vertex_indices\nend_header\n" +
+        kSquareVertices + "3 0 1 2\n";
+    std::string m = error_of(write_scratch("noface", "u.ply", ply));
+    EXPECT_NE(m.find("no faces"), std::string::npos) << m;
+    EXPECT_NE(m.find("element 'xyz' is not understood; faces are read from 'face' or 'tristrips'"), std::string::npos) << m;
+    m = error_of(write_scratch("noface", "u.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nl 1 2\nl 2 3\nfo 1 2 3\n"));
+    EXPECT_NE(m.find("no faces"), std::string::npos) << m;
+    EXPECT_NE(m.find("'fo' (1 line) 'l' (2 lines)"), std::string::npos) << m;
+}
+
+// Reader errors name the file's polygon, not the triangle number after fan triangulation (issue 19).
+TEST(ReadMesh, ErrorsNameTheFilePolygon) {
+    const std::string quads = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\nf 1 2 3 4\nf 1 2 9\n";
+    std::string m = error_of(write_scratch("poly", "q.obj", quads));
+    EXPECT_NE(m.find("line 7: face 2 references vertex 8"), std::string::npos) << m;
+    m = error_of(write_scratch("poly", "q.off", "OFF\n4 3 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n4 0 1 2 3\n3 0 1 9\n"));
+    EXPECT_NE(m.find("line 9: face 2 references vertex 9"), std::string::npos) << m;
 }

@@ -22,6 +22,7 @@
 #include "singlestrip/generators.hpp"
 #include "singlestrip/io.hpp"
 #include "singlestrip/mesh.hpp"
+#include "singlestrip/pipeline.hpp"
 #include "singlestrip/strip.hpp"
 #include "singlestrip/validate.hpp"
 
@@ -212,6 +213,57 @@ TEST(Render, RenderCommandWritesAPictureWithOverlays) {
     bad.input = notstrip;
     bad.cycles.reset();
     EXPECT_THROW(render::run_render_command(bad), InputError);
+}
+
+TEST(Render, FlatMeshesAreSeenFromAbove) {
+    const std::vector<Point3> floor = {{0, 0, 2}, {30, 0, 2}, {30, 20, 2}};
+    const render::View top = render::auto_view(floor);
+    EXPECT_TRUE(top.z_up);
+    EXPECT_EQ(top.elevation_deg, 90.0);
+    const std::vector<Point3> y_flat = {{0, 1, 0}, {3, 1, 0}, {0, 1, 2}};
+    EXPECT_FALSE(render::auto_view(y_flat).z_up);
+    EXPECT_EQ(render::auto_view(y_flat).elevation_deg, 90.0);
+    const std::vector<Point3> solid = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    EXPECT_EQ(render::auto_view(solid).elevation_deg, render::View{}.elevation_deg);
+}
+
+TEST(Render, RouteIsDrawnWithItsEnds) {
+    TriangleSoup soup;
+    for (int y = 0; y <= 4; ++y)
+        for (int x = 0; x <= 4; ++x) soup.points.push_back({double(x), double(y), 0});
+    for (uint32_t y = 0; y < 4; ++y)
+        for (uint32_t x = 0; x < 4; ++x) {
+            const uint32_t a = y * 5 + x;
+            soup.triangles.push_back({a, a + 1, a + 6});
+            soup.triangles.push_back({a, a + 6, a + 5});
+        }
+    const fs::path dir = fs::path(::testing::TempDir()) / "singlestrip_render_route";
+    fs::create_directories(dir);
+    const PipelineResult res = stripify(soup, PipelineOptions{});
+    const std::string ply = (dir / "grid.ply").string();
+    write_strip_mesh(ply, res.arrays.points, res.arrays.faces, res.arrays.parent);
+    render::RenderArgs args;
+    args.input = ply;
+    args.output = (dir / "plain.png").string();
+    args.style.width = 200;
+    args.style.height = 200;
+    ASSERT_EQ(render::run_render_command(args), 0);
+    args.route = true;
+    args.output = (dir / "route.png").string();
+    ASSERT_EQ(render::run_render_command(args), 0);
+    const render::Image plain = render::read_png((dir / "plain.png").string());
+    const render::Image route = render::read_png(args.output);
+    // The route adds dark pixels and a green start mark the plain picture does not have.
+    auto count = [](const render::Image& img, auto pred) {
+        size_t n = 0;
+        for (size_t i = 0; i + 3 < img.rgba.size(); i += 4) n += pred(img.rgba[i], img.rgba[i + 1], img.rgba[i + 2]);
+        return n;
+    };
+    auto dark = [](int r, int g, int b) { return r < 60 && g < 60 && b < 60; };
+    auto green = [](int r, int g, int b) { return g > 120 && r < 60 && b < 80; };
+    EXPECT_GT(count(route, dark), count(plain, dark) + 50);
+    EXPECT_GT(count(route, green), count(plain, green));
+    fs::remove_all(dir);
 }
 
 #endif

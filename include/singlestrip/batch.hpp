@@ -6,13 +6,17 @@
 // Naming. DIR/<stem>.<format> (result), DIR/<stem>.report.json, and with options
 // DIR/<stem>.indices.txt and DIR/<stem>.cycles.json, where <stem> is the input's file name
 // without its extension ("builtin:genus2" -> "builtin_genus2"). When two inputs share a stem, the
-// later ones (in command-line order) get "<stem>-2", "<stem>-3", ... so no output is overwritten.
+// later ones (in command-line order) get "<stem>-2", "<stem>-3", ... so no output is overwritten;
+// the item's `renamed_from` then names the earlier input whose stem it shares and the summary says
+// so. An output that would overwrite one of the inputs (e.g. --out-dir . on a.ply with format ply)
+// stops the run before any work (RequestError). With `write_path`, DIR/<stem>.route.csv
+// (route.hpp).
 //
 // Each file is processed exactly like `singlestrip strip` on that file (read_input, stripify()
 // of pipeline.hpp, write atomically); the report (report.hpp) has the same keys as the CLI's
 // --report plus "ok"/"error"/"exit_code", with "seconds" the file's total time. A failed file
 // leaves no result of its own behind (its finished outputs are removed), but its report is
-// written with the error.
+// written with the error and without an "output" key.
 //
 // Concurrency: files are processed by min(threads, files) std::threads pulling from a shared
 // counter; results are collected in input order, so the summary is deterministic.
@@ -31,10 +35,11 @@ namespace singlestrip {
 
 struct BatchOptions {
     std::string out_dir;                         ///< created if missing
-    std::string format = "ply";                  ///< result extension: ply, obj, off, glb or gltf
+    std::string format = "ply";                  ///< result extension: ply, obj, off, stl, glb or gltf
     std::string input_format;                    ///< ReadOptions::format for every input (empty: by extension)
     bool write_indices = false;                  ///< also <stem>.indices.txt
     bool cycles = false;                         ///< also <stem>.cycles.json (fundamental cycles)
+    bool write_path = false;                     ///< also <stem>.route.csv (route.hpp)
     StripEngine engine = StripEngine::Matching;  ///< StripOptions::engine
     bool greedy = true;                          ///< StripOptions::greedy
     bool orient = false;                         ///< PrepareOptions::orient
@@ -49,8 +54,9 @@ struct BatchOptions {
 /// Outcome for one input file.
 struct BatchItem {
     std::string input;
-    std::string output;  ///< result path (even when failed: where it would have been)
-    std::string report;  ///< report path
+    std::string output;        ///< result path (even when failed: where it would have been)
+    std::string report;        ///< report path
+    std::string renamed_from;  ///< non-empty: the earlier input whose stem this one shares
     bool ok = false;
     int exit_code = 0;  ///< the CLI exit code this file alone would have given (errors.hpp)
     std::string error;  ///< message when !ok
@@ -65,7 +71,8 @@ struct BatchResult {
 };
 
 /// Processes `files` as described above. Never throws for a per-file problem (it is recorded in
-/// the item); \throw RequestError for an unknown format, OutputError if out_dir cannot be created.
+/// the item); \throw RequestError for an unknown format or an output that would overwrite an
+/// input, OutputError if out_dir cannot be created.
 BatchResult run_batch_files(const std::vector<std::string>& files, const BatchOptions& options);
 
 /// Fixed-width summary table (one row per file, totals, failures with their messages).

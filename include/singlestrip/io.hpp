@@ -1,15 +1,20 @@
 // singlestrip — reading meshes, constraint files, and writing results atomically.
 //
 // Input formats (chosen by the file extension, case-insensitive):
-//   .obj  Wavefront OBJ (v / f records; f entries "i", "i/t", "i/t/n", "i//n"; 1-based)
-//   .off  OFF / COFF (colours ignored)
-//   .ply  PLY, ASCII or binary (little/big endian); extra vertex/face properties are ignored
+//   .obj  Wavefront OBJ (v / f records; f entries "i", "i/t", "i/t/n", "i//n"; 1-based, negative
+//         = relative; other records are skipped)
+//   .off  OFF / COFF / NOFF / CNOFF, ASCII or BINARY (colours and normals checked, not kept)
+//   .ply  PLY, ASCII or binary (little/big endian); faces from `face` and `tristrips` elements;
+//         other properties and elements are skipped
 //   .stl  STL, ASCII or binary
-// Parsing is done by CGAL's polygon-soup readers; singlestrip adds its own checks around them so
-// that every failure names the file, the element and the problem.
+// Each format has one strict parser (src/io/read_<format>.cpp, whose header states its grammar)
+// that reads the bytes once and names the file, the line (text) or element and item (binary),
+// and the problem of anything it refuses. Face numbers in messages are the file's polygons.
 //
 // Vertex numbering. Users name vertices by their index in the file, so vertices keep the file's
-// order and indices (0-based). Unreferenced vertices are kept (algorithms ignore them).
+// order and indices (0-based; the CLI's `--index-base 1` reads user numbers 1-based through
+// from_index_base() and read_constraints_based()). Unreferenced vertices are kept (algorithms
+// ignore them).
 // STL has no shared vertices: its corners are WELDED — corners with exactly equal coordinates
 // (equal as doubles after parsing, so -0 == +0; no tolerance) are one vertex, and vertices are
 // numbered in order of first appearance in the file. Corners that differ in the last bit stay
@@ -49,7 +54,11 @@ struct ReadOptions {
 ///        not one of the four), is malformed or truncated,
 ///        has a face index out of range ("face N references vertex K but the file has only M
 ///        vertices"), a NaN or infinite coordinate ("vertex N"), a polygon with fewer than 3
-///        corners, or no faces.
+///        corners, or no faces (the message then names the elements or records not read).
+/// PLY `tristrips`: each list holds strips separated by -1 (or, for unsigned entries, the
+/// type's largest value); triangle i of a strip is (v_i, v_i+1, v_i+2) for even i and
+/// (v_i+1, v_i, v_i+2) for odd i; triangles with a repeated vertex are skipped, and each strip
+/// triangle is a polygon of its own in `source_polygon`.
 /// Structural problems (repeated vertex, non-manifold, orientation, ...) are NOT checked here:
 /// see validate.hpp. Complexity O(file size); memory O(file size), never proportional to a
 /// count the file declares.
@@ -62,7 +71,27 @@ TriangleSoup read_mesh_file(const std::string& path, const ReadOptions& options 
 /// \throw InputError naming the file and line for a missing/unreadable file, a token that is
 ///        not a non-negative integer, a polyline with a single vertex, or an index >= num_vertices.
 std::vector<std::pair<uint32_t, uint32_t>> read_constraints(const std::string& path, uint32_t num_vertices,
-                                                             std::vector<uint32_t>* line_of_pair = nullptr);
+                                                            std::vector<uint32_t>* line_of_pair = nullptr);
+
+/// Vertex numbering chosen by the user (`--index-base`): 0 (the default, the numbering of every
+/// output file and of the library) or 1 (OBJ's own numbering). Returns `number - base`.
+/// \throw RequestError "<what> 0 is not a vertex number when numbering starts at 1" for 0 with
+///        base 1, or for a base other than 0 and 1. O(1).
+uint32_t from_index_base(uint32_t number, uint32_t base, const std::string& what);
+
+/// read_constraints() for a file whose vertex numbers start at `index_base` (0 or 1); the pairs
+/// returned are 0-based. \throw InputError as read_constraints(), naming the file, the line and
+/// the number for a 0 in a 1-based file or a number above the vertex count. O(file size).
+std::vector<std::pair<uint32_t, uint32_t>> read_constraints_based(const std::string& path, uint32_t num_vertices, uint32_t index_base,
+                                                                  std::vector<uint32_t>* line_of_pair = nullptr);
+
+/// Refuses outputs that would overwrite an input or each other: two entries of `outputs` naming
+/// the same file (same path after normalisation, or the same existing file through a link), or
+/// an output naming one of `inputs`. "-" (standard output) may appear once. Empty strings are
+/// ignored. \throw RequestError naming both uses of the file, before anything is written.
+/// O(n^2) in the number of paths (a handful).
+void refuse_overwrites(const std::vector<std::pair<std::string, std::string>>& inputs,
+                       const std::vector<std::pair<std::string, std::string>>& outputs);
 
 /// Checks that every constraint pair is an edge of the triangle soup. `line_of_pair` (from
 /// read_constraints) lets the message name the file line. \throw RequestError naming the file,
@@ -70,11 +99,12 @@ std::vector<std::pair<uint32_t, uint32_t>> read_constraints(const std::string& p
 void check_constraint_edges(const std::string& path, const std::vector<std::pair<uint32_t, uint32_t>>& pairs,
                             const std::vector<uint32_t>& line_of_pair, const TriangleSoup& soup);
 
-/// Output mesh formats, chosen by extension.
-enum class OutputFormat { Ply, Obj, Off };
+/// Output mesh formats, chosen by extension (glTF has its own writer, gltf.hpp).
+enum class OutputFormat { Ply, Obj, Off, Stl };
 
-/// Output format of `path` from its extension (.ply / .obj / .off, case-insensitive).
-/// \throw RequestError for any other extension (call this before doing any work).
+/// Output format of `path` from its extension (.ply / .obj / .off / .stl, case-insensitive).
+/// \throw RequestError for any other extension, listing every extension `singlestrip strip`
+///        writes (.glb and .gltf included), before any work is done.
 OutputFormat output_format_for(const std::string& path);
 
 /// Writes the strip mesh: `points` (input vertices first, unchanged; midpoints after) and `faces`
@@ -83,14 +113,16 @@ OutputFormat output_format_for(const std::string& path);
 ///         with `property list uchar uint vertex_indices` and `property uint parent`.
 ///   .obj: "v x y z" lines then "f a b c" (1-based); OBJ has no place for `parent`.
 ///   .off: "OFF", counts, vertices, "3 a b c" faces.
+///   .stl: binary STL, one float32 facet per face with its unit normal; STL has no shared
+///         vertices, no `parent` and float32 coordinates, so `verify` cannot check it.
 /// Text formats write the shortest decimal that round-trips (std::to_chars), so coordinates read
 /// back bit-exact.
 /// The file is written to a temporary in the same directory and renamed into place at the end:
 /// a failure never leaves a partial output.
 /// \pre parent.size() == faces.size(), every face index < points.size().
 /// \throw RequestError for an unknown extension (before writing), OutputError on any I/O failure.
-void write_strip_mesh(const std::string& path, const std::vector<Point3>& points,
-                      const std::vector<Triangle>& faces, const std::vector<uint32_t>& parent);
+void write_strip_mesh(const std::string& path, const std::vector<Point3>& points, const std::vector<Triangle>& faces,
+                      const std::vector<uint32_t>& parent);
 
 /// Writes indices as whitespace-separated decimal text, 16 per line, atomically.
 /// \throw OutputError.

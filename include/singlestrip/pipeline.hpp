@@ -67,6 +67,9 @@ struct PipelineOptions {
     /// Constraint file (io.hpp format), read after the input checks; its pairs are appended to
     /// strip.constraint_edges and each must be a mesh edge (messages name the file line).
     std::optional<std::string> constraints_file;
+    /// Vertex numbers in constraints_file start at this: 0 (default) or 1 (`--index-base 1`).
+    /// strip.source, strip.target and strip.constraint_edges are always 0-based.
+    uint32_t index_base = 0;
     /// Tests and fuzzing: Mesh::validate() and a one-component check after Mesh::from_soup,
     /// Mesh::validate() after the strip; O(F) each.
     bool self_check = false;

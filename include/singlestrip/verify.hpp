@@ -125,6 +125,7 @@ struct VerifyFileOptions {
     std::string input_format;                ///< ReadOptions::format for the input mesh
     uint32_t restart_index = 0xffffffffu;    ///< restart value in the indices file
     InputSteps steps;                        ///< --weld / --repair / --orient of the strip run
+    uint32_t index_base = 0;                 ///< vertex numbers in constraints_path start at 0 or 1
 };
 
 /// A glTF OUT (.glb/.gltf written by `strip`, one TRIANGLE_STRIP primitive) is read with

@@ -5,6 +5,7 @@
 #include <cctype>
 #include <cerrno>
 #include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -62,6 +63,25 @@ void put_le(std::ostream& out, T v) {
     out.write(reinterpret_cast<const char*>(b), sizeof(T));
 }
 
+/// Binary STL: 80-byte header, facet count, then per face its float32 unit normal (zero for a
+/// degenerate face), three float32 corners and a zero attribute word.
+void write_binary_stl(std::ostream& out, const std::vector<Point3>& points, const std::vector<Triangle>& faces) {
+    char header[80] = "singlestrip: faces in strip order (binary STL, float32)";
+    out.write(header, sizeof header);
+    put_le(out, static_cast<uint32_t>(faces.size()));
+    for (const Triangle& t : faces) {
+        const Point3 &a = points[t[0]], &b = points[t[1]], &c = points[t[2]];
+        const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+        double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+        const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+        for (double& x : n) x = len > 0 ? x / len : 0.0;
+        for (double x : n) put_le(out, static_cast<float>(x));
+        for (uint32_t k : t)
+            for (double x : points[k]) put_le(out, static_cast<float>(x));
+        put_le<uint16_t>(out, 0);
+    }
+}
+
 }  // namespace
 
 OutputFormat output_format_for(const std::string& path) {
@@ -70,18 +90,21 @@ OutputFormat output_format_for(const std::string& path) {
     if (ext == ".ply") return OutputFormat::Ply;
     if (ext == ".obj") return OutputFormat::Obj;
     if (ext == ".off") return OutputFormat::Off;
-    throw RequestError(path + ": unknown output format '" + ext + "' (expected .ply, .obj or .off)");
+    if (ext == ".stl") return OutputFormat::Stl;
+    throw RequestError(path + ": unknown output format '" + ext + "' (expected .ply, .obj, .off, .stl, .glb or .gltf)");
 }
 
 void write_strip_mesh(const std::string& path, const std::vector<Point3>& points, const std::vector<Triangle>& faces,
                       const std::vector<uint32_t>& parent) {
     const OutputFormat fmt = output_format_for(path);
     if (parent.size() != faces.size())
-        throw InternalError("write_strip_mesh: " + std::to_string(faces.size()) + " faces but " + std::to_string(parent.size()) + " parents");
+        throw InternalError("write_strip_mesh: " + std::to_string(faces.size()) + " faces but " + std::to_string(parent.size()) +
+                            " parents");
     for (std::size_t f = 0; f < faces.size(); ++f)
         for (uint32_t v : faces[f])
-            if (v >= points.size()) throw InternalError("write_strip_mesh: face " + std::to_string(f) + " references vertex " + std::to_string(v) +
-                                                        " of " + std::to_string(points.size()));
+            if (v >= points.size())
+                throw InternalError("write_strip_mesh: face " + std::to_string(f) + " references vertex " + std::to_string(v) + " of " +
+                                    std::to_string(points.size()));
     write_atomically(path, [&](std::ofstream& out) {
         switch (fmt) {
             case OutputFormat::Ply: {
@@ -111,6 +134,9 @@ void write_strip_mesh(const std::string& path, const std::vector<Point3>& points
                 for (const auto& t : faces) out << "f " << t[0] + 1ull << ' ' << t[1] + 1ull << ' ' << t[2] + 1ull << '\n';
                 break;
             }
+            case OutputFormat::Stl:
+                write_binary_stl(out, points, faces);
+                break;
             case OutputFormat::Off: {
                 out << "OFF\n" << points.size() << ' ' << faces.size() << " 0\n";
                 for (const auto& p : points) {

@@ -240,6 +240,84 @@ def test_unknown_engine_raises_value_error():
         ss.strip(v, f, engine="fast")
 
 
+# Issue 19: kinds and shapes are checked, never converted silently; read(); the route.
+
+def test_float_faces_are_refused():
+    v, f = grid(2)
+    with pytest.raises(ValueError, match="integer array.*float64"):
+        ss.strip(v, f.astype(np.float64))
+    with pytest.raises(ValueError, match="integer array"):
+        ss.verify(v, f.astype(np.float32), ss.strip(v, f))
+
+
+@pytest.mark.parametrize("vertices, pattern", [
+    (np.zeros((3, 3), dtype=complex), "real numbers.*complex"),
+    (np.array([["a", "b", "c"]] * 3), "real numbers"),
+    (np.zeros((3, 4)), r"shape \(n, 3\).*\(3, 4\)"),
+])
+def test_vertex_kind_and_shape(vertices, pattern):
+    with pytest.raises(ValueError, match=pattern):
+        ss.strip(vertices, np.array([[0, 1, 2]]))
+
+
+def test_faces_shape_is_named():
+    v, _ = grid(2)
+    with pytest.raises(ValueError, match=r"shape \(m, 3\).*\(2, 4\)"):
+        ss.strip(v, np.zeros((2, 4), dtype=np.int32))
+
+
+def test_read_returns_numpy_arrays():
+    v, f = ss.read(os.path.join(DATA, "tetra.obj"))
+    assert v.dtype == np.float64 and v.shape == (4, 3)
+    assert f.dtype == np.uint32 and f.shape == (4, 3)
+    v2, f2 = ss.read(os.path.join(DATA, "tetra.off"))
+    assert np.array_equal(v, v2) and np.array_equal(f, f2)
+    # Polygons are fan-triangulated as the CLI does.
+    _, fq = ss.read(os.path.join(DATA, "pyramid_quad.off"))
+    assert fq.shape[1] == 3
+    r = ss.strip(v, f)
+    assert ss.verify(v, f, r)["ok"]
+
+
+def test_read_errors_are_value_errors():
+    with pytest.raises(ValueError, match="missing.off"):
+        ss.read(os.path.join(DATA, "missing.off"))
+    with pytest.raises(ValueError, match="references vertex"):
+        ss.read(os.path.join(DATA, "index_out_of_range.off"))
+    with pytest.raises(ValueError):
+        ss.read(os.path.join(DATA, "tetra.off"), format="xyz")
+
+
+def test_read_with_format_for_a_nameless_file(tmp_path):
+    p = tmp_path / "mesh.data"
+    with open(os.path.join(DATA, "tetra.off")) as src:
+        p.write_text(src.read())
+    v, f = ss.read(str(p), format="off")
+    assert f.shape == (4, 3)
+
+
+def test_route_through_centroids_and_midpoints():
+    v, f = grid(4)
+    r = ss.strip(v, f)
+    route = r["route"]
+    faces, pts = r["faces"], route["points"]
+    n = len(faces)
+    assert pts.dtype == np.float64 and pts.shape == (2 * n - 1, 3)
+    assert route["face"].dtype == np.uint32 and list(route["face"][::2]) == list(range(n))
+    centroids = r["vertices"][faces.astype(np.int64)].mean(axis=1)
+    assert np.allclose(pts[::2], centroids)
+    seg = np.linalg.norm(np.diff(pts, axis=0), axis=1)
+    assert math.isclose(route["length"], seg.sum(), rel_tol=1e-12)
+    assert np.allclose(route["distance"][1:], np.cumsum(seg))
+    assert route["planar_z"]
+    assert np.array_equal(route["parent"][::2], r["parent"])
+
+
+def test_every_function_has_a_docstring():
+    for name in ("strip", "verify", "decode_strip", "read"):
+        assert len(getattr(ss, name).__doc__ or "") > 40, name
+
+
 @pytest.mark.parametrize("name", STRUCTURAL + ["two_components.off"])
 def test_repair_strips_every_broken_file_and_verifies(name):
     v, f = read_off(os.path.join(DATA, name))

@@ -1,0 +1,119 @@
+// Route files: CSV, JSON, OBJ polyline, GeoJSON LineString (route.hpp).
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <filesystem>
+#include <string>
+
+#include "singlestrip/errors.hpp"
+#include "singlestrip/io.hpp"
+#include "singlestrip/route.hpp"
+
+namespace singlestrip {
+namespace {
+
+/// Shortest decimal that reads back exactly (JSON has no NaN: coordinates are finite here).
+std::string num(double v) {
+    char buf[64];
+    auto res = std::to_chars(buf, buf + sizeof buf, v);
+    return std::string(buf, res.ptr);
+}
+
+const char* kind(const RoutePoint& p) {
+    return p.centroid ? "centroid" : "edge";
+}
+
+std::string csv(const Route& r) {
+    std::string s = "x,y,z,face,parent,kind,distance\n";
+    for (const RoutePoint& p : r.points)
+        s += num(p.position[0]) + ',' + num(p.position[1]) + ',' + num(p.position[2]) + ',' + std::to_string(p.face) + ',' +
+             std::to_string(p.parent) + ',' + kind(p) + ',' + num(p.distance) + '\n';
+    return s;
+}
+
+std::string json(const Route& r) {
+    std::string s = "{\"length\": " + num(r.length) + ", \"planar_z\": " + (r.planar_z ? "true" : "false") + ", \"points\": [";
+    for (size_t i = 0; i < r.points.size(); ++i) {
+        const RoutePoint& p = r.points[i];
+        s += std::string(i ? ",\n  " : "\n  ") + "{\"x\": " + num(p.position[0]) + ", \"y\": " + num(p.position[1]) +
+             ", \"z\": " + num(p.position[2]) + ", \"face\": " + std::to_string(p.face) + ", \"parent\": " + std::to_string(p.parent) +
+             ", \"kind\": \"" + kind(p) + "\", \"distance\": " + num(p.distance) + "}";
+    }
+    return s + (r.points.empty() ? "]}\n" : "\n]}\n");
+}
+
+std::string obj(const Route& r) {
+    std::string s = "# singlestrip route: " + std::to_string(r.points.size()) + " points through face centroids and shared-edge " +
+                    "midpoints, length " + num(r.length) + "\n";
+    for (const RoutePoint& p : r.points) s += "v " + num(p.position[0]) + ' ' + num(p.position[1]) + ' ' + num(p.position[2]) + '\n';
+    if (r.points.size() >= 2) {  // a single point is not a polyline
+        s += "o route\nl";
+        for (size_t i = 1; i <= r.points.size(); ++i) s += ' ' + std::to_string(i);
+        s += '\n';
+    }
+    return s;
+}
+
+std::string geojson(const Route& r) {
+    if (!r.planar_z)
+        throw RequestError("route: GeoJSON needs a mesh that is planar in z (a floor plan); write .csv, .json or .obj for a 3D surface");
+    std::string coords, faces;
+    for (size_t i = 0; i < r.points.size(); ++i) {
+        const RoutePoint& p = r.points[i];
+        coords += std::string(i ? ", " : "") + '[' + num(p.position[0]) + ", " + num(p.position[1]) + ']';
+        faces += std::string(i ? ", " : "") + std::to_string(p.face);
+    }
+    // A LineString needs two positions: a one-face strip repeats its point.
+    if (r.points.size() == 1) coords += ", " + coords;
+    return "{\"type\": \"FeatureCollection\", \"features\": [{\"type\": \"Feature\",\n \"geometry\": {\"type\": \"LineString\", "
+           "\"coordinates\": [" +
+           coords + "]},\n \"properties\": {\"name\": \"singlestrip route\", \"length\": " + num(r.length) +
+           ", \"z\": " + (r.points.empty() ? std::string("0") : num(r.points.front().position[2])) + ", \"faces\": [" + faces + "]}}]}\n";
+}
+
+std::string lower(std::string s) {
+    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return s;
+}
+
+}  // namespace
+
+RouteFormat parse_route_format(const std::string& name) {
+    const std::string n = lower(name);
+    if (n == "csv") return RouteFormat::Csv;
+    if (n == "json") return RouteFormat::Json;
+    if (n == "obj") return RouteFormat::Obj;
+    if (n == "geojson") return RouteFormat::GeoJson;
+    throw RequestError("unknown route format '" + name + "' (csv, json, obj or geojson)");
+}
+
+RouteFormat route_format_for(const std::string& path) {
+    const std::string ext = lower(std::filesystem::path(path).extension().string());
+    if (ext.size() > 1) {
+        try {
+            return parse_route_format(ext.substr(1));
+        } catch (const RequestError&) {
+        }
+    }
+    throw RequestError(path + ": unknown route file extension '" + ext + "' (expected .csv, .json, .obj or .geojson)");
+}
+
+std::string route_text(const Route& route, RouteFormat format) {
+    switch (format) {
+        case RouteFormat::Csv:
+            return csv(route);
+        case RouteFormat::Json:
+            return json(route);
+        case RouteFormat::Obj:
+            return obj(route);
+        case RouteFormat::GeoJson:
+            return geojson(route);
+    }
+    throw InternalError("route_text: unknown format");
+}
+
+void write_route(const std::string& path, const Route& route) {
+    write_text_atomic(path, route_text(route, route_format_for(path)));
+}
+
+}  // namespace singlestrip

@@ -1,0 +1,67 @@
+// The strip's route as a polyline (route.hpp).
+#include "singlestrip/route.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "singlestrip/errors.hpp"
+
+namespace singlestrip {
+namespace {
+
+Point3 centroid(const StripArrays& a, uint32_t f) {
+    const Triangle& t = a.faces[f];
+    Point3 c{};
+    for (int k = 0; k < 3; ++k) c[k] = (a.points[t[0]][k] + a.points[t[1]][k] + a.points[t[2]][k]) / 3.0;
+    return c;
+}
+
+/// Midpoint of the edge faces f and g share. \throw InternalError when they share none.
+Point3 shared_midpoint(const StripArrays& a, uint32_t f, uint32_t g) {
+    uint32_t shared[3];
+    int n = 0;
+    for (uint32_t v : a.faces[f])
+        if (std::find(a.faces[g].begin(), a.faces[g].end(), v) != a.faces[g].end() && n < 3) shared[n++] = v;
+    if (n != 2) throw InternalError("route: strip faces " + std::to_string(f) + " and " + std::to_string(g) + " do not share an edge");
+    const Point3& p = a.points[shared[0]];
+    const Point3& q = a.points[shared[1]];
+    return {(p[0] + q[0]) / 2.0, (p[1] + q[1]) / 2.0, (p[2] + q[2]) / 2.0};
+}
+
+double distance(const Point3& p, const Point3& q) {
+    return std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]));
+}
+
+/// Every vertex of a face has the same z, up to 1e-9 of the mesh's extent (rounding in the
+/// file's decimals must not turn a floor plan into a 3D surface).
+bool faces_planar_in_z(const StripArrays& a) {
+    if (a.faces.empty()) return false;
+    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (const Triangle& t : a.faces)
+        for (uint32_t v : t)
+            for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], a.points[v][k]), hi[k] = std::max(hi[k], a.points[v][k]);
+    const double extent = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
+    return hi[2] - lo[2] <= 1e-9 * extent;
+}
+
+}  // namespace
+
+Route strip_route(const StripArrays& a) {
+    if (a.parent.size() != a.faces.size()) throw InternalError("route: faces and parents differ in size");
+    Route r;
+    r.planar_z = faces_planar_in_z(a);
+    const auto n = static_cast<uint32_t>(a.faces.size());
+    r.points.reserve(n ? 2 * n - 1 : 0);
+    auto add = [&](const Point3& p, uint32_t f, bool is_centroid) {
+        if (!r.points.empty()) r.length += distance(r.points.back().position, p);
+        r.points.push_back({p, f, a.parent[f], is_centroid, r.length});
+    };
+    for (uint32_t f = 0; f < n; ++f) {
+        add(centroid(a, f), f, true);
+        if (f + 1 < n) add(shared_midpoint(a, f, f + 1), f, false);
+    }
+    return r;
+}
+
+}  // namespace singlestrip
