@@ -326,15 +326,16 @@ void print_summary(const std::string& input, const ss::PipelineResult& r) {
     if (r.repair) std::cerr << "singlestrip: " << input << ": repair: " << r.repair->summary() << '\n';
     if (r.options.weld && !r.options.repair) std::cerr << "singlestrip: " << input << ": weld: " << r.welded << " vertices merged\n";
     for (const auto& w : r.warnings) std::cerr << "singlestrip: " << input << ": warning: " << w << '\n';
-    const std::string strips = r.components.size() == 1 ? std::string("1 strip")
-                                                         : std::to_string(r.components.size()) + " strips (" +
-                                                               ss::join_mode_name(r.options.join) + " joins)";
+    const std::string strips = r.components.size() == 1
+                                   ? std::string("1 strip")
+                                   : std::to_string(r.components.size()) + " strips (" + ss::join_mode_name(r.options.join) + " joins)";
     char line[640];
     std::snprintf(line, sizeof line,
                   "singlestrip: %s: %u -> %u triangles (%+.1f%%, %u splits), %s of %zu indices (%.3f per input triangle), "
                   "genus %lld, %u boundary loops; read %.3fs build %.3fs strip %.3fs write %.3fs\n",
-                  input.c_str(), st.input_triangles, st.output_triangles, ss::extra_percent(st), st.splits, strips.c_str(), r.indices.size(),
-                  ss::indices_per_triangle(st, r.indices.size()), st.genus, st.boundary_loops, t.read, t.build, t.strip, t.write);
+                  input.c_str(), st.input_triangles, st.output_triangles, ss::extra_percent(st), st.splits, strips.c_str(),
+                  r.indices.size(), ss::indices_per_triangle(st, r.indices.size()), st.genus, st.boundary_loops, t.read, t.build, t.strip,
+                  t.write);
     std::cerr << line;
 }
 
@@ -413,9 +414,10 @@ struct VerifyArgs {
 
 int run_verify(const VerifyArgs& a) {
     if (std::filesystem::path(a.output).extension() == ".stl")
-        throw ss::RequestError(a.output +
-                               ": verify reads .ply, .obj, .off and glTF results (an STL result has no shared vertices to check); "
-                               "write a .ply with the same options to verify");
+        throw ss::RequestError(
+            a.output +
+            ": verify reads .ply, .obj, .off and glTF results (STL stores float32 corners and no shared vertices to check); "
+            "write a .ply with the same options to verify");
     if (ss::is_gltf_path(a.output) && ss::is_gltf_path(a.input))
         throw ss::RequestError(a.output +
                                ": a glTF scene stripped primitive by primitive is not verified; write a .ply from the same "
@@ -540,9 +542,10 @@ CLI::App* add_strip(CLI::App& app, StripArgs& sa) {
     strip->add_flag("--no-greedy", sa.no_greedy, "Use the paper's plain same-direction turn rule");
     strip->add_flag("--orient", sa.orient, "Consistently re-orient an orientable mesh first (each component keeps its majority)");
     add_repair_options(strip, sa.fix);
-    strip->add_option_function<std::string>(
-             "--join", [&sa](const std::string& m) { sa.join = *ss::parse_join_mode(m); },
-             "Several components: join their strips in the index file by degenerate triangles (default) or a restart index")
+    strip
+        ->add_option_function<std::string>(
+            "--join", [&sa](const std::string& m) { sa.join = *ss::parse_join_mode(m); },
+            "Several components: join their strips in the index file by degenerate triangles (default) or a restart index")
         ->check(CLI::IsMember({"degenerate", "restart"}));
     strip->add_option("--restart-index", sa.restart_index, "Restart index for --join restart (default 4294967295)");
     strip->add_option("--input-format", sa.input_format, kInputFormatHelp)

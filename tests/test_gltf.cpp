@@ -19,6 +19,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 #include <nlohmann/json.hpp>
 #define TINYGLTF_NO_STB_IMAGE
 #define TINYGLTF_NO_STB_IMAGE_WRITE
@@ -105,7 +107,9 @@ std::string validator_dir(std::string& why) {
 
 /// Runs the Khronos validator on `file`; returns its JSON report.
 nlohmann::json validate_gltf(const std::string& dir, const std::string& file) {
-    const fs::path script = fs::path(dir) / "validate.js";
+    // One script per process: ctest runs the validator tests in parallel, and a script rewritten
+    // while another node reads it fails at random.
+    const fs::path script = fs::path(dir) / ("validate-" + std::to_string(::getpid()) + ".js");
     {
         std::ofstream js(script);
         js << "const v = require('gltf-validator');\n"
@@ -116,7 +120,9 @@ nlohmann::json validate_gltf(const std::string& dir, const std::string& file) {
               "  .catch(e => { process.stdout.write(JSON.stringify({exception: String(e)})); process.exit(1); });\n";
     }
     int st = 0;
-    const std::string out = run_capture("cd '" + dir + "' && node validate.js '" + file + "' 2>&1", st);
+    const std::string out = run_capture("cd '" + dir + "' && node '" + script.filename().string() + "' '" + file + "' 2>&1", st);
+    std::error_code ec;
+    fs::remove(script, ec);
     EXPECT_EQ(st, 0) << out;
     return nlohmann::json::parse(out, nullptr, /*allow_exceptions=*/false);
 }
