@@ -34,6 +34,7 @@
 #include "singlestrip/gltf.hpp"
 #include "singlestrip/io.hpp"
 #include "singlestrip/pipeline.hpp"
+#include "singlestrip/repair.hpp"
 #include "singlestrip/report.hpp"
 #include "singlestrip/route.hpp"
 #include "singlestrip/strip.hpp"
@@ -113,6 +114,7 @@ json info_json(const std::string& input, const ss::MeshInfo& m, long long flippe
     j["orientable"] = m.orientable;
     j["oriented"] = m.oriented;
     if (flipped >= 0) j["faces_flipped_by_orient"] = flipped;
+    j["unwelded_vertices"] = m.unwelded_vertices;
     j["valid"] = m.valid();
     json ps = json::array();
     for (const auto& p : m.problems) ps.push_back({{"kind", p.kind}, {"message", p.message}});
@@ -140,6 +142,7 @@ std::string info_text(const std::string& input, const ss::MeshInfo& m, long long
       << "Euler characteristic: " << m.euler_characteristic << '\n'
       << "genus:                " << (m.genus_valid ? std::to_string(m.genus) : std::string("n/a (not a manifold orientable surface)"))
       << '\n'
+      << "unwelded vertices:    " << m.unwelded_vertices << (m.unwelded_vertices ? " (--weld or --repair merges them)\n" : "\n")
       << "orientable:           " << yes_no(m.orientable) << '\n'
       << "consistently oriented:" << ' ' << yes_no(m.oriented);
     if (flipped >= 0) o << " (after --orient flipped " << flipped << " faces)";
@@ -154,15 +157,39 @@ std::string info_text(const std::string& input, const ss::MeshInfo& m, long long
     return o.str();
 }
 
-int run_info(const std::string& input, const std::string& format, bool as_json, bool orient) {
+/// `info`, `strip`, `verify`: --weld and --repair (repair.hpp).
+struct RepairArgs {
+    bool weld = false, repair = false;
+};
+
+void add_repair_options(CLI::App* app, RepairArgs& r) {
+    app->add_flag("--weld", r.weld, "Merge vertices with exactly equal coordinates first (always done for STL)");
+    app->add_flag("--repair", r.repair,
+                  "Repair first: weld, drop degenerate and duplicate faces, cut non-manifold and non-orientable parts apart, "
+                  "orient (docs/repair.md)");
+}
+
+int run_info(const std::string& input, const std::string& format, bool as_json, bool orient, const RepairArgs& ra) {
     ss::TriangleSoup soup = load_input(input, format);
+    std::optional<ss::RepairReport> repaired;
+    if (ra.repair) {
+        ss::RepairedSoup rs = ss::repair_soup(soup);
+        soup = std::move(rs.soup);
+        repaired = std::move(rs.report);
+        std::cerr << "singlestrip: " << input << ": repair: " << repaired->summary() << '\n';
+    } else if (ra.weld) {
+        std::cerr << "singlestrip: " << input << ": weld: " << ss::weld_soup(soup) << " vertices merged\n";
+    }
     long long flipped = -1;
     if (orient) flipped = ss::orient_soup(soup);  // -1: not orientable, reported as a problem
     const ss::MeshInfo m = ss::mesh_info(soup);
-    if (as_json)
-        std::cout << info_json(input, m, orient ? flipped : -1).dump(2) << '\n';
-    else
+    if (as_json) {
+        json j = info_json(input, m, orient ? flipped : -1);
+        if (repaired) j["repair"] = json::parse(ss::repair_json(*repaired));
+        std::cout << j.dump(2) << '\n';
+    } else {
         std::cout << info_text(input, m, orient ? flipped : -1);
+    }
     return m.valid() ? ss::kExitOk : ss::kExitBadInput;
 }
 
@@ -178,6 +205,9 @@ struct StripArgs {
     bool with_indices = false, with_cycles = false, with_path = false;
     std::optional<uint32_t> seed_face, source, target;
     bool no_greedy = false, orient = false;
+    RepairArgs fix;
+    ss::JoinMode join = ss::JoinMode::Degenerate;
+    uint32_t restart_index = 0xffffffffu;
     ss::StripEngine engine = ss::StripEngine::Matching;
 };
 
@@ -229,6 +259,10 @@ ss::PipelineOptions pipeline_options(const StripArgs& a) {
     o.strip.source = based(a.source, a.index_base, "--source");
     o.strip.target = based(a.target, a.index_base, "--target");
     o.orient = a.orient;
+    o.weld = a.fix.weld;
+    o.repair = a.fix.repair;
+    o.join = a.join;
+    o.restart_index = a.restart_index;
     o.cycles = a.cycles || a.cycles_obj;
     o.name = a.input;
     o.constraints_file = a.constraints;
@@ -249,7 +283,7 @@ double write_outputs(const StripArgs& a, const ss::PipelineResult& r, OutputSet&
     Stopwatch clock;
     write_one(outputs, a.output, a.format, [&](const std::string& p) {
         if (ss::is_gltf_path(p))
-            ss::write_gltf_strip(p, r.arrays, r.indices);
+            ss::write_gltf_strip(p, r.arrays, ss::degenerate_joined_indices(r));
         else
             ss::write_strip_mesh(p, r.arrays.points, r.arrays.faces, r.arrays.parent);
     });
@@ -289,16 +323,60 @@ void check_strip_outputs(const StripArgs& a) {
 void print_summary(const std::string& input, const ss::PipelineResult& r) {
     const auto& st = r.strip.stats;
     const auto& t = r.seconds;
-    char line[512];
+    if (r.repair) std::cerr << "singlestrip: " << input << ": repair: " << r.repair->summary() << '\n';
+    if (r.options.weld && !r.options.repair) std::cerr << "singlestrip: " << input << ": weld: " << r.welded << " vertices merged\n";
+    for (const auto& w : r.warnings) std::cerr << "singlestrip: " << input << ": warning: " << w << '\n';
+    const std::string strips = r.components.size() == 1
+                                   ? std::string("1 strip")
+                                   : std::to_string(r.components.size()) + " strips (" + ss::join_mode_name(r.options.join) + " joins)";
+    char line[640];
     std::snprintf(line, sizeof line,
-                  "singlestrip: %s: %u -> %u triangles (%+.1f%%, %u splits), 1 strip of %zu indices (%.3f per input triangle), "
+                  "singlestrip: %s: %u -> %u triangles (%+.1f%%, %u splits), %s of %zu indices (%.3f per input triangle), "
                   "genus %lld, %u boundary loops; read %.3fs build %.3fs strip %.3fs write %.3fs\n",
-                  input.c_str(), st.input_triangles, st.output_triangles, ss::extra_percent(st), st.splits, r.indices.size(),
-                  ss::indices_per_triangle(st, r.indices.size()), st.genus, st.boundary_loops, t.read, t.build, t.strip, t.write);
+                  input.c_str(), st.input_triangles, st.output_triangles, ss::extra_percent(st), st.splits, strips.c_str(),
+                  r.indices.size(), ss::indices_per_triangle(st, r.indices.size()), st.genus, st.boundary_loops, t.read, t.build, t.strip,
+                  t.write);
     std::cerr << line;
 }
 
+/// glTF in and out: every triangle primitive stripped, the rest of the scene kept (gltf.hpp).
+int run_strip_gltf(const StripArgs& a) {
+    if (a.indices || a.cycles || a.cycles_obj || a.constraints || a.source || a.target || a.seed_face || a.path)
+        throw ss::RequestError(a.input +
+                               ": a glTF scene is stripped primitive by primitive (vertex and face numbers are per primitive): "
+                               "--indices, --cycles, --cycles-obj, --path, --constraints, --source, --target and --seed-face need "
+                               "a .ply/.obj/.off output (all triangle primitives as one mesh)");
+    const auto prims = ss::strip_gltf_file(a.input, a.output, pipeline_options(a));
+    json rep = {{"input", a.input}, {"output", a.output}, {"primitives", json::array()}};
+    for (const auto& p : prims) {
+        std::cerr << "singlestrip: " << a.input << ": mesh " << p.mesh << " primitive " << p.primitive << ": ";
+        if (!p.stripped) {
+            std::cerr << "kept as it was: " << p.note << '\n';
+        } else {
+            std::cerr << p.input_triangles << " -> " << p.output_triangles << " triangles, " << p.strips << " strip(s) of "
+                      << p.strip_indices << " indices";
+            if (!p.repair.empty()) std::cerr << "; repair: " << p.repair;
+            std::cerr << '\n';
+        }
+        rep["primitives"].push_back({{"mesh", p.mesh},
+                                     {"primitive", p.primitive},
+                                     {"stripped", p.stripped},
+                                     {"note", p.note},
+                                     {"input_triangles", p.input_triangles},
+                                     {"output_triangles", p.output_triangles},
+                                     {"splits", p.splits},
+                                     {"strips", p.strips},
+                                     {"strip_indices", p.strip_indices},
+                                     {"welded_vertices", p.welded},
+                                     {"attributes", p.attributes},
+                                     {"repair", p.repair}});
+    }
+    if (a.report) ss::write_text_atomic(*a.report, rep.dump(2) + "\n");
+    return ss::kExitOk;
+}
+
 int run_strip(const StripArgs& a) {
+    if (ss::is_gltf_path(a.input) && ss::is_gltf_path(a.output) && a.input_format.empty()) return run_strip_gltf(a);
     // Unknown extension, overwriting: RequestError before any work.
     check_strip_outputs(a);
     Stopwatch clock;
@@ -329,13 +407,21 @@ struct VerifyArgs {
     std::optional<uint32_t> source, target;
     std::string input_format;  ///< `--input-format`
     uint32_t index_base = 0;
+    RepairArgs fix;
+    bool orient = false;
+    uint32_t restart_index = 0xffffffffu;
 };
 
 int run_verify(const VerifyArgs& a) {
-    if (ss::is_gltf_path(a.output) || std::filesystem::path(a.output).extension() == ".stl")
+    if (std::filesystem::path(a.output).extension() == ".stl")
+        throw ss::RequestError(
+            a.output +
+            ": verify reads .ply, .obj, .off and glTF results (STL stores float32 corners and no shared vertices to check); "
+            "write a .ply with the same options to verify");
+    if (ss::is_gltf_path(a.output) && ss::is_gltf_path(a.input))
         throw ss::RequestError(a.output +
-                               ": verify reads .ply, .obj or .off results (glTF and STL store float32 positions, "
-                               "too coarse for the exact checks); write a .ply with the same options to verify");
+                               ": a glTF scene stripped primitive by primitive is not verified; write a .ply from the same "
+                               "input (all its triangle primitives as one mesh) to verify");
     ss::VerifyFileOptions o;
     o.indices_path = a.indices;
     o.constraints_path = a.constraints;
@@ -344,6 +430,8 @@ int run_verify(const VerifyArgs& a) {
     o.cycles_path = a.cycles;
     o.input_format = a.input_format;
     o.index_base = a.index_base;
+    o.steps = {a.fix.weld, a.fix.repair, a.orient};
+    o.restart_index = a.restart_index;
     // The built-in model has no file: it is generated and checked like a read input.
     const ss::VerifyReport rep = ss::is_builtin_input(a.input) ? ss::verify_files(load_input(a.input, a.input_format), a.output, o)
                                                                : ss::verify_files(input_path(a.input, a.input_format), a.output, o);
@@ -408,16 +496,18 @@ const char* const kInputFormatHelp = "Format of INPUT (obj, off, ply, stl) when 
 const char* const kIndexBaseHelp =
     "Vertex numbers in --constraints, --source and --target start at 0 (default; the numbering of every output file) or 1 (OBJ's)";
 const char* const kInputFooter =
-    "INPUT is a .obj, .off, .ply or .stl file, - (standard input, with --input-format), or builtin:genus2 (the demo model).";
+    "INPUT is a .obj, .off, .ply, .stl, .glb or .gltf file, - (standard input, with --input-format), or builtin:genus2 (the demo\n"
+    "model).";
 const char* const kExitFooter =
     "Exit codes: 0 ok, 2 usage, 3 bad input, 4 request cannot be met (including an output that would overwrite\n"
     "an input or another output), 5 verification failed, 6 internal error, 7 output not written.";
 
-CLI::App* add_info(CLI::App& app, std::string& input, std::string& format, bool& as_json, bool& orient) {
+CLI::App* add_info(CLI::App& app, std::string& input, std::string& format, bool& as_json, bool& orient, RepairArgs& fix) {
     auto* info = app.add_subcommand("info", "Report counts, topology and every problem of a mesh (exit 3 if not valid for stripping)");
     info->add_option("INPUT", input, "Input mesh file, - (standard input) or builtin:genus2")->required();
     info->add_flag("--json", as_json, "Machine-readable JSON output");
     info->add_flag("--orient", orient, "Consistently re-orient an orientable mesh before reporting");
+    add_repair_options(info, fix);
     info->add_option("--input-format", format, kInputFormatHelp)->check(CLI::IsMember({"obj", "off", "ply", "stl"}, CLI::ignore_case));
     info->footer(std::string(kInputFooter) + "\n" + kExitFooter);
     return info;
@@ -450,7 +540,14 @@ CLI::App* add_strip(CLI::App& app, StripArgs& sa) {
         strip, [&sa](ss::StripEngine e) { sa.engine = e; },
         "Strip engine: matching (default) or growth (the paper's builder, for comparison)");
     strip->add_flag("--no-greedy", sa.no_greedy, "Use the paper's plain same-direction turn rule");
-    strip->add_flag("--orient", sa.orient, "Consistently re-orient an orientable mesh first");
+    strip->add_flag("--orient", sa.orient, "Consistently re-orient an orientable mesh first (each component keeps its majority)");
+    add_repair_options(strip, sa.fix);
+    strip
+        ->add_option_function<std::string>(
+            "--join", [&sa](const std::string& m) { sa.join = *ss::parse_join_mode(m); },
+            "Several components: join their strips in the index file by degenerate triangles (default) or a restart index")
+        ->check(CLI::IsMember({"degenerate", "restart"}));
+    strip->add_option("--restart-index", sa.restart_index, "Restart index for --join restart (default 4294967295)");
     strip->add_option("--input-format", sa.input_format, kInputFormatHelp)
         ->check(CLI::IsMember({"obj", "off", "ply", "stl"}, CLI::ignore_case));
     strip->add_option("--constraints", sa.constraints, "Edges the strip must not cross: one polyline of vertex numbers per line");
@@ -468,7 +565,7 @@ CLI::App* add_strip(CLI::App& app, StripArgs& sa) {
 CLI::App* add_verify(CLI::App& app, VerifyArgs& va) {
     auto* verify = app.add_subcommand("verify", "Independently check a strip output against its input (exit 5 on failure)");
     verify->add_option("IN", va.input, "Input mesh file, - (standard input) or builtin:genus2")->required();
-    verify->add_option("OUT", va.output, "Output mesh written by `singlestrip strip` (.ply, .obj or .off)")->required();
+    verify->add_option("OUT", va.output, "Output mesh written by `singlestrip strip` (.ply, .obj, .off, or .glb/.gltf)")->required();
     verify->add_option("--indices", va.indices, "GL_TRIANGLE_STRIP index file to check against OUT");
     verify->add_option("--constraints", va.constraints, "Constraint polylines the strip must respect");
     verify->add_option("--source", va.source, "Required first-face vertex");
@@ -477,6 +574,9 @@ CLI::App* add_verify(CLI::App& app, VerifyArgs& va) {
     verify->add_option("--cycles", va.cycles, "Cycles JSON to check for independence");
     verify->add_option("--input-format", va.input_format, kInputFormatHelp)
         ->check(CLI::IsMember({"obj", "off", "ply", "stl"}, CLI::ignore_case));
+    add_repair_options(verify, va.fix);
+    verify->add_flag("--orient", va.orient, "OUT was made with --orient: check against the re-oriented input");
+    verify->add_option("--restart-index", va.restart_index, "Restart index in the --indices file (default 4294967295)");
     verify->footer(kExitFooter);
     return verify;
 }
@@ -501,6 +601,9 @@ int run_batch_mode(const StripArgs& sa) {
     b.greedy = !sa.no_greedy;
     b.engine = sa.engine;
     b.orient = sa.orient;
+    b.weld = sa.fix.weld;
+    b.repair = sa.fix.repair;
+    b.join = sa.join;
     b.seed_face = sa.seed_face;
     b.threads = sa.jobs;
     return ss::run_batch(sa.inputs, b, std::cout);
@@ -519,7 +622,8 @@ int main(int argc, char** argv) {
 
     std::string info_input, info_format;
     bool info_json_flag = false, info_orient = false;
-    auto* info = add_info(app, info_input, info_format, info_json_flag, info_orient);
+    RepairArgs info_fix;
+    auto* info = add_info(app, info_input, info_format, info_json_flag, info_orient, info_fix);
     StripArgs sa;
     auto* strip = add_strip(app, sa);
     VerifyArgs va;
@@ -544,7 +648,7 @@ int main(int argc, char** argv) {
     }
 
     try {
-        if (info->parsed()) return run_info(info_input, info_format, info_json_flag, info_orient);
+        if (info->parsed()) return run_info(info_input, info_format, info_json_flag, info_orient, info_fix);
         if (strip->parsed()) {
             if (sa.out_dir) return run_batch_mode(sa);
             if (sa.inputs.size() != 1 || sa.output.empty()) {

@@ -13,6 +13,7 @@
 // It returns "" when there is no finding, else a description (callers abort or fail a test).
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <exception>
 #include <map>
@@ -56,7 +57,8 @@ inline std::string check_soup(const TriangleSoup& s) {
 struct Request {
     bool orient = false;
     StripOptions strip;
-    bool cycles = true;  ///< run compute_fundamental_cycles and tree_cotree_cycles
+    bool cycles = true;   ///< run compute_fundamental_cycles and tree_cotree_cycles
+    bool repair = false;  ///< PipelineOptions::repair (then only "no faces" may be refused)
 };
 
 /// The stats of a stripped result must agree with the input and the strip order.
@@ -65,10 +67,11 @@ inline std::string check_counts(const PipelineResult& r) {
     if (st.input_triangles != r.input.triangles.size())
         return "stats.input_triangles " + std::to_string(st.input_triangles) + " != " + std::to_string(r.input.triangles.size());
     if (st.splits > st.input_triangles) return "more splits (" + std::to_string(st.splits) + ") than input faces";
-    if (st.output_triangles != st.input_triangles + 2 * st.splits || r.strip.order.size() != st.output_triangles)
-        return "face count " + std::to_string(r.strip.order.size()) + " / " + std::to_string(st.output_triangles) + " does not match " +
+    if (st.output_triangles != st.input_triangles + 2 * st.splits || r.arrays.faces.size() != st.output_triangles)
+        return "face count " + std::to_string(r.arrays.faces.size()) + " / " + std::to_string(st.output_triangles) + " does not match " +
                std::to_string(st.input_triangles) + " + 2 * " + std::to_string(st.splits) + " splits";
-    if (r.indices.size() > triangle_strip_bound(r.arrays.faces.size())) return "encoded strip longer than triangle_strip_bound";
+    if (r.indices.size() > joined_strip_bound(r.arrays.faces.size(), r.components.size()))
+        return "encoded strips longer than joined_strip_bound";
     if (r.cycles && r.cycles->sources.size() != r.cycles->cycles.size())
         return std::to_string(r.cycles->sources.size()) + " cycle sources for " + std::to_string(r.cycles->cycles.size()) + " cycles";
     return {};
@@ -83,6 +86,12 @@ inline std::string check_result(const PipelineResult& r, const Request& req, con
     vi.out_points = r.arrays.points;
     vi.out_faces = r.arrays.faces;
     vi.out_parent = r.arrays.parent;
+    if (!r.face_origin.empty()) {  // parents name input faces; verify against the repaired soup
+        std::vector<uint32_t> of_input(r.face_origin.empty() ? 0 : *std::max_element(r.face_origin.begin(), r.face_origin.end()) + 1,
+                                       0xffffffffu);
+        for (uint32_t t = 0; t < r.face_origin.size(); ++t) of_input[r.face_origin[t]] = t;
+        for (uint32_t& p : vi.out_parent) p = p < of_input.size() ? of_input[p] : 0xffffffffu - 1;
+    }
     vi.indices = r.indices;
     vi.constraints = req.strip.constraint_edges;
     vi.source = req.strip.source;
@@ -91,7 +100,9 @@ inline std::string check_result(const PipelineResult& r, const Request& req, con
     // constraints and source/target: verify() checks count and independence.
     if (r.cycles) vi.cycles = r.cycles->cycles;
     if (VerifyReport rep = verify(vi); !rep.ok()) return "verify failed:\n" + rep.to_string();
-    if (!req.cycles) return {};
+    // Several components: r.strip holds only the totals (pipeline.hpp), and verify() checks
+    // cycles on one-component outputs only.
+    if (!req.cycles || r.components.size() != 1) return {};
     where = "tree_cotree_cycles";
     vi.indices.reset();
     vi.constraints.clear();
@@ -113,6 +124,7 @@ inline std::string check_pipeline(TriangleSoup soup, const Request& req, Outcome
         PipelineOptions o;
         o.strip = req.strip;
         o.orient = req.orient;
+        o.repair = req.repair;
         o.cycles = req.cycles;
         o.name = "fuzz";
         o.self_check = true;

@@ -205,7 +205,7 @@ py::tuple read_mesh(const std::string& path, const py::object& format) {
 
 py::dict strip(const py::object& vertices, const py::object& faces, const py::object& constraints, const py::object& source,
                const py::object& target, bool cycles, const py::object& seed_face, bool greedy, bool orient, const std::string& name,
-               const std::string& engine) {
+               const std::string& engine, bool repair, bool weld, const std::string& join) {
     ss::TriangleSoup soup;
     soup.points = to_points(vertices, name.c_str());
     soup.triangles = to_faces(faces, soup.points.size(), name.c_str());
@@ -218,6 +218,11 @@ py::dict strip(const py::object& vertices, const py::object& faces, const py::ob
     opt.strip.seed_face = to_vertex(seed_face, "seed_face");
     opt.strip.constraint_edges = to_constraints(constraints, soup.points.size());
     opt.orient = orient;
+    opt.repair = repair;
+    opt.weld = weld;
+    const auto join_mode = ss::parse_join_mode(join);
+    if (!join_mode) throw py::value_error("unknown join '" + join + "' (choices: degenerate, restart)");
+    opt.join = *join_mode;
     opt.cycles = cycles;
     opt.name = name;
 
@@ -250,7 +255,7 @@ py::dict strip(const py::object& vertices, const py::object& faces, const py::ob
 }
 
 py::dict verify(const py::object& vertices, const py::object& faces, const py::dict& result, const py::object& constraints,
-                const py::object& source, const py::object& target) {
+                const py::object& source, const py::object& target, bool repair, bool weld, bool orient) {
     ss::VerifyInput in;
     in.in_points = to_points(vertices, "vertices");
     in.in_faces = to_faces(faces, in.in_points.size(), "faces");
@@ -277,7 +282,9 @@ py::dict verify(const py::object& vertices, const py::object& faces, const py::d
     ss::VerifyReport rep;
     {
         py::gil_scoped_release release;
+        const std::vector<std::string> notes = ss::replay_input_steps(in, {weld, repair, orient});
         rep = ss::verify(in);
+        rep.notes.insert(rep.notes.begin(), notes.begin(), notes.end());
     }
     py::dict d;
     d["ok"] = rep.ok();
@@ -289,6 +296,7 @@ py::dict verify(const py::object& vertices, const py::object& faces, const py::d
     d["euler_characteristic"] = rep.euler_characteristic;
     d["boundary_loops"] = rep.boundary_loops;
     d["genus"] = rep.genus;
+    d["strips"] = rep.strips;
     d["cycles_checked"] = rep.cycles_checked;
     d["cycle_rank"] = rep.cycle_rank;
     d["text"] = rep.to_string();
@@ -302,8 +310,9 @@ PYBIND11_MODULE(singlestrip, m) {
     m.attr("__version__") = "0.1.0";
     m.def("strip", &strip, py::arg("vertices"), py::arg("faces"), py::arg("constraints") = py::none(), py::arg("source") = py::none(),
           py::arg("target") = py::none(), py::arg("cycles") = false, py::arg("seed_face") = py::none(), py::arg("greedy") = true,
-          py::arg("orient") = false, py::arg("name") = "input", py::arg("engine") = "matching",
-          R"doc(Turn a triangle mesh into ONE triangle strip.
+          py::arg("orient") = false, py::arg("name") = "input", py::arg("engine") = "matching", py::arg("repair") = false,
+          py::arg("weld") = false, py::arg("join") = "degenerate",
+          R"doc(Turn a triangle mesh into ONE triangle strip per edge-connected component.
 
 vertices: (n, 3) floats; faces: (m, 3) vertex indices (0-based), consistently oriented
 (orient=True re-orients), edge-connected, manifold.
@@ -312,6 +321,9 @@ source/target: vertex ids the first/last strip face must touch. seed_face: input
 cycles: also compute the fundamental cycles (face chains into the output faces).
 name: prefix of error messages (the CLI uses the file name).
 engine: "matching" (default) or "growth" (the paper's builder, for comparison).
+repair: weld, drop degenerate/duplicate faces, cut non-manifold and non-orientable parts apart,
+orient (docs/repair.md; report["repair"] says what changed). weld: only merge equal vertices.
+join: "degenerate" (default) or "restart" (0xFFFFFFFF) between the strips of several components.
 
 Returns a dict: vertices (n', 3) float64 (input vertices first, midpoints after), faces (m', 3)
 uint32 in strip order, parent (m',) uint32 input face of each output face, strip (k,) uint32
@@ -322,10 +334,12 @@ Raises ValueError for arrays of the wrong shape or kind (faces must be integers)
 Raises ValueError for invalid input, an impossible request or an unknown engine (same messages
 as the CLI).)doc");
     m.def("verify", &verify, py::arg("vertices"), py::arg("faces"), py::arg("result"), py::arg("constraints") = py::none(),
-          py::arg("source") = py::none(), py::arg("target") = py::none(),
+          py::arg("source") = py::none(), py::arg("target") = py::none(), py::arg("repair") = false, py::arg("weld") = false,
+          py::arg("orient") = false,
           R"doc(Independently check `result` (a dict as returned by strip(): vertices, faces, optional parent,
 strip, cycles) against the input mesh. Returns a dict with ok (bool), failures, notes, counts and
-text (the CLI's `verify` output).)doc");
+text (the CLI's `verify` output). repair/weld/orient: `result` was made with them; the input is
+replayed through the library's repair first (a note says what it changed).)doc");
     m.def(
         "decode_strip",
         [](const py::object& indices) {

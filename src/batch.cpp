@@ -45,6 +45,9 @@ PipelineOptions pipeline_options(const BatchOptions& o, const std::string& input
     p.strip.greedy = o.greedy;
     p.strip.seed_face = o.seed_face;
     p.orient = o.orient;
+    p.weld = o.weld;
+    p.repair = o.repair;
+    p.join = o.join;
     p.cycles = o.cycles;
     p.name = input;
     return p;
@@ -56,7 +59,7 @@ void write_outputs(const BatchItem& item, const BatchOptions& o, const std::stri
     std::vector<std::string> written;
     try {
         if (is_gltf_path(item.output))
-            write_gltf_strip(item.output, r.arrays, r.indices);
+            write_gltf_strip(item.output, r.arrays, degenerate_joined_indices(r));
         else
             write_strip_mesh(item.output, r.arrays.points, r.arrays.faces, r.arrays.parent);
         written.push_back(item.output);

@@ -29,12 +29,14 @@
 namespace singlestrip {
 namespace {
 
-constexpr int kStates = 12;                // ordered pair slot (6) x parity (2)
+constexpr int kStates = 12;  // ordered pair slot (6) x parity (2)
 constexpr uint8_t kUnreachable = 0xff;
 constexpr uint64_t kInf = std::numeric_limits<uint64_t>::max() / 4;
 
 /// Ordered pair of distinct positions (ix, iy) in a triangle <-> slot 0..5.
-int pair_slot(int ix, int iy) { return ix * 2 + (iy > ix ? iy - 1 : iy); }
+int pair_slot(int ix, int iy) {
+    return ix * 2 + (iy > ix ? iy - 1 : iy);
+}
 std::pair<int, int> slot_pair(int slot) {
     const int ix = slot / 2, r = slot % 2;
     return {ix, r < ix ? r : r + 1};
@@ -79,8 +81,8 @@ struct Graph {
                 if (x == y || y == z || x == z) {
                     v = node(y, z, 1 - p);  // degenerate: skipped by the decoder
                 } else {
-                    const Triangle tri = p == 0 ? Triangle{uint32_t(x), uint32_t(y), uint32_t(z)}
-                                                : Triangle{uint32_t(y), uint32_t(x), uint32_t(z)};
+                    const Triangle tri =
+                        p == 0 ? Triangle{uint32_t(x), uint32_t(y), uint32_t(z)} : Triangle{uint32_t(y), uint32_t(x), uint32_t(z)};
                     if (!same_winding(tri, target)) continue;  // a stray triangle: forbidden
                     int iy = 0, iz = 0;
                     for (int k = 0; k < 3; ++k) {
@@ -115,8 +117,7 @@ struct Transition {
 };
 using Matrix = std::array<std::array<Transition, kStates>, kStates>;  // [from state][to state]
 
-void store_path(const Graph& g, const Graph::Search& s, int to, std::vector<int>& scratch, Transition& t,
-                uint8_t extra_cost) {
+void store_path(const Graph& g, const Graph::Search& s, int to, std::vector<int>& scratch, Transition& t, uint8_t extra_cost) {
     scratch.clear();
     Graph::path(s, g.nodes() + to, scratch);
     if (scratch.size() + t.len > t.labels.size()) throw InternalError("encode_triangle_strip: path too long");
@@ -134,12 +135,14 @@ Triangle relabel(const Triangle& prev, const Triangle& next, size_t j) {
             if (next[k] == prev[i]) labels[k] = static_cast<uint32_t>(i), ++shared;
     }
     if (shared < 2)
-        throw InternalError("encode_triangle_strip: faces " + std::to_string(j) + " and " +
-                            std::to_string(j + 1) + " do not share an edge");
+        throw InternalError("encode_triangle_strip: faces " + std::to_string(j) + " and " + std::to_string(j + 1) +
+                            " do not share an edge");
     return labels;
 }
 
-int pattern_key(const Triangle& labels) { return static_cast<int>(labels[0] * 16 + labels[1] * 4 + labels[2]); }
+int pattern_key(const Triangle& labels) {
+    return static_cast<int>(labels[0] * 16 + labels[1] * 4 + labels[2]);
+}
 
 Graph graph_for(const Triangle& labels) {
     const bool new_vertex = labels[0] == 3 || labels[1] == 3 || labels[2] == 3;
@@ -224,8 +227,8 @@ std::vector<uint32_t> encode_triangle_strip(const std::vector<Triangle>& faces) 
     const Tables& tab = tables();
     const std::array<Transition, kStates>& first = tab.first;
     const std::array<std::optional<Matrix>, 64>& cache = tab.step;
-    std::vector<uint8_t> pattern(n, 0);                   // pattern key of step j-1 -> j
-    std::vector<std::array<uint8_t, kStates>> back(n);    // best predecessor state
+    std::vector<uint8_t> pattern(n, 0);                 // pattern key of step j-1 -> j
+    std::vector<std::array<uint8_t, kStates>> back(n);  // best predecessor state
     std::array<uint64_t, kStates> cost{};
     for (int t = 0; t < kStates; ++t) cost[t] = first[t].cost == kUnreachable ? kInf : first[t].cost;
 
@@ -271,12 +274,48 @@ std::vector<uint32_t> encode_triangle_strip(const std::vector<Triangle>& faces) 
     return out;
 }
 
-std::vector<Triangle> decode_triangle_strip(const std::vector<uint32_t>& indices) {
+std::vector<Triangle> decode_triangle_strip(const std::vector<uint32_t>& indices, std::optional<uint32_t> restart) {
     std::vector<Triangle> out;
+    size_t begin = 0;  // first index of the current strip: parity counts from there
     for (size_t i = 0; i + 2 < indices.size(); ++i) {
         const uint32_t a = indices[i], b = indices[i + 1], c = indices[i + 2];
+        if (restart && a == *restart) {
+            begin = i + 1;
+            continue;
+        }
+        if (restart && (b == *restart || c == *restart)) continue;
         if (a == b || b == c || a == c) continue;
-        out.push_back(i % 2 == 0 ? Triangle{a, b, c} : Triangle{b, a, c});
+        out.push_back((i - begin) % 2 == 0 ? Triangle{a, b, c} : Triangle{b, a, c});
+    }
+    return out;
+}
+
+const char* join_mode_name(JoinMode mode) noexcept {
+    return mode == JoinMode::Restart ? "restart" : "degenerate";
+}
+
+std::optional<JoinMode> parse_join_mode(std::string_view name) noexcept {
+    if (name == "degenerate") return JoinMode::Degenerate;
+    if (name == "restart") return JoinMode::Restart;
+    return std::nullopt;
+}
+
+std::vector<uint32_t> join_strips(const std::vector<std::vector<uint32_t>>& strips, JoinMode mode, uint32_t restart) {
+    std::vector<uint32_t> out;
+    for (const auto& s : strips) {
+        if (s.empty()) throw InternalError("join_strips: empty strip");
+        if (!out.empty()) {
+            if (mode == JoinMode::Restart) {
+                out.push_back(restart);
+            } else {
+                // The next strip must start at an even position to keep its windings.
+                const uint32_t last = out.back();
+                out.push_back(last);
+                out.push_back(s.front());
+                if (out.size() % 2 == 1) out.push_back(s.front());
+            }
+        }
+        out.insert(out.end(), s.begin(), s.end());
     }
     return out;
 }

@@ -5,9 +5,11 @@
 #include <string>
 #include <utility>
 
+#include "components.hpp"
 #include "singlestrip/encode.hpp"
 #include "singlestrip/errors.hpp"
 #include "singlestrip/generators.hpp"
+#include "singlestrip/gltf.hpp"
 #include "singlestrip/mesh.hpp"
 #include "singlestrip/validate.hpp"
 
@@ -71,7 +73,8 @@ bool is_builtin_input(const std::string& input) noexcept {
 }
 
 TriangleSoup read_input(const std::string& input, const ReadOptions& options) {
-    if (!is_builtin_input(input)) return read_mesh_file(input, options);
+    if (!is_builtin_input(input))
+        return is_gltf_path(input) && options.format.empty() ? read_gltf_soup(input) : read_mesh_file(input, options);
     if (input != kBuiltinGenus2) throw RequestError("unknown built-in model '" + input + "' (available: " + kBuiltinGenus2 + ")");
     return make_builtin_model();
 }
@@ -96,30 +99,86 @@ const char* stage_name(PipelineStage stage) noexcept {
     return "unknown";
 }
 
+namespace {
+
+/// Applies weld / repair (options) to `soup`, recording what changed in `r`.
+TriangleSoup pre_repair(TriangleSoup soup, const PipelineOptions& options, PipelineResult& r) {
+    if (options.repair) {
+        RepairedSoup rs = repair_soup(soup, RepairOptions{options.repair_weld});
+        r.face_origin = std::move(rs.face_origin);
+        r.repair = std::move(rs.report);
+        return std::move(rs.soup);
+    }
+    if (options.weld) r.welded = weld_soup(soup);
+    return soup;
+}
+
+/// A warning when an unwelded soup falls apart into components that --weld would join.
+void warn_unwelded(PipelineResult& r, uint32_t components) {
+    if (components < 2 || r.options.weld || r.options.repair) return;
+    const uint64_t u = unwelded_vertices(r.input);
+    if (u == 0) return;
+    r.warnings.push_back(std::to_string(u) +
+                         " vertices have exactly the coordinates of another vertex (the file left its corners apart): the " +
+                         std::to_string(components) + " components may be one surface; --weld (or --repair) merges them");
+}
+
+void map_parents(PipelineResult& r) {
+    if (r.face_origin.empty()) return;
+    for (uint32_t& p : r.arrays.parent) p = r.face_origin[p];
+}
+
+/// Today's path: one component, one strip.
+void strip_one(PipelineResult& r, bool self_check, PipelineStage* stage) {
+    enter(stage, PipelineStage::Mesh);
+    Mesh mesh = build_mesh(r.input, self_check);
+    enter(stage, PipelineStage::Strip);
+    r.strip = build_strip(std::move(mesh), r.options.strip);
+    if (self_check) r.strip.mesh.validate();
+    enter(stage, PipelineStage::Encode);
+    r.arrays = strip_arrays(r.strip);
+    r.indices = encode_triangle_strip(r.arrays.faces);
+    const StripStats& st = r.strip.stats;
+    r.components.push_back({st.input_triangles, st.output_triangles, st.splits, st.genus, st.boundary_loops, 0, r.indices.size()});
+    if (r.options.cycles) {
+        enter(stage, PipelineStage::Cycles);
+        r.cycles = compute_fundamental_cycles(r.strip);
+    }
+}
+
+}  // namespace
+
+std::vector<uint32_t> degenerate_joined_indices(const PipelineResult& r) {
+    if (r.components.size() <= 1 || r.options.join == JoinMode::Degenerate) return r.indices;
+    std::vector<std::vector<uint32_t>> strips;
+    for (const ComponentStrip& c : r.components) {
+        std::vector<Triangle> faces(r.arrays.faces.begin() + static_cast<std::ptrdiff_t>(c.first_face),
+                                    r.arrays.faces.begin() + static_cast<std::ptrdiff_t>(c.first_face + c.output_triangles));
+        strips.push_back(encode_triangle_strip(faces));
+    }
+    return join_strips(strips, JoinMode::Degenerate);
+}
+
 PipelineResult stripify(TriangleSoup soup, const PipelineOptions& options, PipelineStage* stage) {
     Stopwatch clock;
     PipelineResult r;
     r.options = options;
     enter(stage, PipelineStage::Checks);
-    r.input = prepare_soup(std::move(soup), PrepareOptions{options.orient}, options.name);
+    soup = pre_repair(std::move(soup), options, r);
+    r.input = prepare_soup(std::move(soup), PrepareOptions{options.orient || options.repair}, options.name);
     if (options.constraints_file) {
         enter(stage, PipelineStage::Constraints);
         append_constraint_file(*options.constraints_file, options.index_base, r.input, r.options.strip);
     }
-    enter(stage, PipelineStage::Mesh);
-    Mesh mesh = build_mesh(r.input, options.self_check);
+    uint32_t count = 0;
+    const std::vector<uint32_t> comp = face_components(r.input, &count);
+    warn_unwelded(r, count);
     r.seconds.build = clock.lap();
-
-    enter(stage, PipelineStage::Strip);
-    r.strip = build_strip(std::move(mesh), r.options.strip);
-    if (options.self_check) r.strip.mesh.validate();
-    enter(stage, PipelineStage::Encode);
-    r.arrays = strip_arrays(r.strip);
-    r.indices = encode_triangle_strip(r.arrays.faces);
-    if (options.cycles) {
-        enter(stage, PipelineStage::Cycles);
-        r.cycles = compute_fundamental_cycles(r.strip);
-    }
+    if (count <= 1)
+        strip_one(r, options.self_check, stage);
+    else
+        detail::strip_components(r, comp, count, stage);
+    map_parents(r);
     r.seconds.strip = clock.lap();
     enter(stage, PipelineStage::Done);
     return r;

@@ -15,10 +15,47 @@ json options_json(const PipelineOptions& o) {
               {"greedy", o.strip.greedy},
               {"orient", o.orient},
               {"constraint_edges", o.strip.constraint_edges.size()}};
+    j["repair"] = o.repair;
+    j["weld"] = o.weld;
+    j["join"] = join_mode_name(o.join);
+    if (o.join == JoinMode::Restart) j["restart_index"] = o.restart_index;
     if (o.strip.seed_face) j["seed_face"] = *o.strip.seed_face;
     if (o.strip.source) j["source"] = *o.strip.source;
     if (o.strip.target) j["target"] = *o.strip.target;
     return j;
+}
+
+json pairs(const std::vector<std::pair<uint32_t, uint32_t>>& v) {
+    json a = json::array();
+    for (const auto& [x, y] : v) a.push_back({x, y});
+    return a;
+}
+
+json repair_json_value(const RepairReport& r) {
+    return {{"summary", r.summary()},
+            {"changed", r.changed()},
+            {"welded_vertices", r.welded.size()},
+            {"invalid_faces", r.invalid_faces.size()},
+            {"degenerate_faces", r.degenerate_faces.size()},
+            {"duplicate_faces", r.duplicate_faces.size()},
+            {"non_manifold_edges", r.non_manifold_edges.size()},
+            {"split_vertices", r.split_vertices.size()},
+            {"vertex_copies", r.copied_from.size()},
+            {"orientation_cuts", r.orientation_cuts.size()},
+            {"non_orientable_components", r.non_orientable_components},
+            {"flipped_faces", r.flipped_faces.size()},
+            {"turned_outward", r.turned_outward},
+            {"components", r.components},
+            {"elements",
+             {{"welded", pairs(r.welded)},
+              {"invalid_faces", r.invalid_faces},
+              {"degenerate_faces", r.degenerate_faces},
+              {"duplicate_faces", r.duplicate_faces},
+              {"non_manifold_edges", pairs(r.non_manifold_edges)},
+              {"split_vertices", r.split_vertices},
+              {"copied_from", r.copied_from},
+              {"orientation_cuts", pairs(r.orientation_cuts)},
+              {"flipped_faces", r.flipped_faces}}}};
 }
 
 void add_counts(json& j, const PipelineResult& r) {
@@ -35,6 +72,20 @@ void add_counts(json& j, const PipelineResult& r) {
     j["deferred_regions"] = st.deferred_regions;
     j["indices_per_triangle"] = indices_per_triangle(st, r.indices.size());
     j["extra_percent"] = extra_percent(st);
+    j["strips"] = r.components.size();
+    json comps = json::array();
+    for (const ComponentStrip& c : r.components)
+        comps.push_back({{"input_triangles", c.input_triangles},
+                         {"output_triangles", c.output_triangles},
+                         {"splits", c.splits},
+                         {"genus", c.genus},
+                         {"boundary_loops", c.boundary_loops},
+                         {"first_face", c.first_face},
+                         {"strip_indices", c.strip_indices}});
+    j["components"] = comps;
+    if (r.repair) j["repair"] = repair_json_value(*r.repair);
+    if (r.options.weld && !r.options.repair) j["welded_vertices"] = r.welded;
+    if (!r.warnings.empty()) j["warnings"] = r.warnings;
 }
 
 void add_cycles(json& j, const Cycles& c) {
@@ -53,6 +104,10 @@ void add_outcome(json& j, const RunOutcome& o) {
 }
 
 }  // namespace
+
+std::string repair_json(const RepairReport& report) {
+    return repair_json_value(report).dump(2) + "\n";
+}
 
 std::string report_json(const ReportInput& in) {
     const PipelineOptions* options = in.options ? in.options : in.result ? &in.result->options : nullptr;

@@ -17,16 +17,18 @@ Point3 centroid(const StripArrays& a, uint32_t f) {
     return c;
 }
 
-/// Midpoint of the edge faces f and g share. \throw InternalError when they share none.
-Point3 shared_midpoint(const StripArrays& a, uint32_t f, uint32_t g) {
+/// Midpoint of the edge faces f and g share; false when they share none (g starts the next
+/// strip of an output with several components).
+bool shared_midpoint(const StripArrays& a, uint32_t f, uint32_t g, Point3& mid) {
     uint32_t shared[3];
     int n = 0;
     for (uint32_t v : a.faces[f])
         if (std::find(a.faces[g].begin(), a.faces[g].end(), v) != a.faces[g].end() && n < 3) shared[n++] = v;
-    if (n != 2) throw InternalError("route: strip faces " + std::to_string(f) + " and " + std::to_string(g) + " do not share an edge");
+    if (n != 2) return false;
     const Point3& p = a.points[shared[0]];
     const Point3& q = a.points[shared[1]];
-    return {(p[0] + q[0]) / 2.0, (p[1] + q[1]) / 2.0, (p[2] + q[2]) / 2.0};
+    mid = {(p[0] + q[0]) / 2.0, (p[1] + q[1]) / 2.0, (p[2] + q[2]) / 2.0};
+    return true;
 }
 
 double distance(const Point3& p, const Point3& q) {
@@ -53,13 +55,19 @@ Route strip_route(const StripArrays& a) {
     r.planar_z = faces_planar_in_z(a);
     const auto n = static_cast<uint32_t>(a.faces.size());
     r.points.reserve(n ? 2 * n - 1 : 0);
+    bool jump = false;  // the next centroid starts a new strip: the move to it is off the surface
     auto add = [&](const Point3& p, uint32_t f, bool is_centroid) {
-        if (!r.points.empty()) r.length += distance(r.points.back().position, p);
-        r.points.push_back({p, f, a.parent[f], is_centroid, r.length});
+        if (!r.points.empty() && !jump) r.length += distance(r.points.back().position, p);
+        r.points.push_back({p, f, a.parent[f], is_centroid, r.length, jump});
+        jump = false;
     };
     for (uint32_t f = 0; f < n; ++f) {
         add(centroid(a, f), f, true);
-        if (f + 1 < n) add(shared_midpoint(a, f, f + 1), f, false);
+        Point3 mid{};
+        if (f + 1 < n && shared_midpoint(a, f, f + 1, mid))
+            add(mid, f, false);
+        else
+            jump = f + 1 < n;
     }
     return r;
 }

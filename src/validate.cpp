@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "singlestrip/errors.hpp"
+#include "singlestrip/repair.hpp"
 
 namespace singlestrip {
 namespace {
@@ -250,6 +251,8 @@ struct Analysis {
     }
 
     // BFS from the lowest-numbered face of each component; flip[g] = flip[f] xor (same direction).
+    // Then each component keeps the orientation of the majority of its faces (ties: of its
+    // lowest face), so --orient never turns most of a mesh inside out.
     void orient_bfs() {
         flip.assign(nf, -1);
         std::vector<uint32_t> queue;
@@ -278,6 +281,10 @@ struct Analysis {
                     }
                 }
             }
+            std::size_t flips = 0;
+            for (uint32_t f : queue) flips += flip[f] == 1 ? 1 : 0;
+            if (2 * flips > queue.size())
+                for (uint32_t f : queue) flip[f] = static_cast<int8_t>(1 - flip[f]);
         }
         if (!orientable) oriented = false;
     }
@@ -289,7 +296,7 @@ struct Analysis {
     }
 
     std::size_t total_problems() const {
-        std::size_t n = (nf == 0 ? 1 : 0) + (component_sizes.size() > 1 ? 1 : 0);
+        std::size_t n = nf == 0 ? 1 : 0;
         for (const ProblemList* l : {&out_of_range, &repeated, &duplicate, &nm_edge, &nm_vertex, &inconsistent, &non_orientable})
             n += l->total;
         return n;
@@ -305,21 +312,36 @@ struct Analysis {
         nm_vertex.emit(out);
         inconsistent.emit(out);
         non_orientable.emit(out);
-        if (component_sizes.size() > 1) {
-            std::string sizes;
-            for (std::size_t i = 0; i < component_sizes.size() && i < kMaxPerKind; ++i)
-                sizes += (i ? ", " : "") + std::to_string(component_sizes[i]);
-            if (component_sizes.size() > kMaxPerKind) sizes += ", ...";
-            out.push_back({"components", "the mesh has " + std::to_string(component_sizes.size()) +
-                                             " edge-connected components (faces per component: " + sizes + "); exactly 1 is required"});
-        }
         return out;
     }
 
     std::unique_ptr<UnionFind> corners_;
 };
 
-/// "<file>: p1; p2; ... (and N more problems ...)"; `total` counts problems beyond the listed ones.
+/// " (fix: ...)" naming the option that repairs the kinds of problem in `ps` (docs/repair.md).
+std::string fix_hint(const std::vector<SoupProblem>& ps) {
+    static const std::vector<std::pair<std::string, std::string>> actions = {
+        {"index_out_of_range", "drops faces with an index out of range"},
+        {"repeated_vertex", "drops faces that repeat a vertex"},
+        {"duplicate_face", "drops duplicate faces"},
+        {"non_manifold_edge", "cuts non-manifold edges and vertices apart"},
+        {"non_manifold_vertex", "cuts non-manifold edges and vertices apart"},
+        {"non_orientable", "cuts a non-orientable surface into an orientable piece"},
+        {"inconsistent_orientation", "re-orients the faces"}};
+    auto present = [&](const std::string& kind) {
+        return std::any_of(ps.begin(), ps.end(), [&](const SoupProblem& p) { return p.kind == kind; });
+    };
+    std::vector<std::string> said;
+    for (const auto& [kind, action] : actions)
+        if (present(kind) && std::find(said.begin(), said.end(), action) == said.end()) said.push_back(action);
+    if (said.empty()) return {};
+    if (said.size() == 1 && present("inconsistent_orientation")) return " (fix: --orient or --repair re-orients the faces)";
+    std::string hint = " (fix: --repair ";
+    for (std::size_t i = 0; i < said.size(); ++i) hint += (i == 0 ? "" : i + 1 == said.size() ? " and " : ", ") + said[i];
+    return hint + ")";
+}
+
+/// "<file>: p1; p2; ... (and N more problems ...) (fix: ...)"; `total` counts problems beyond the listed ones.
 std::string join_problems(const std::vector<SoupProblem>& ps, std::size_t total, const std::string& filename) {
     constexpr std::size_t kShown = 5;
     std::string msg = filename + ": ";
@@ -331,7 +353,7 @@ std::string join_problems(const std::vector<SoupProblem>& ps, std::size_t total,
         ++shown;
     }
     if (total > shown) msg += " (and " + std::to_string(total - shown) + " more problems; run 'singlestrip info' for all)";
-    return msg;
+    return msg + fix_hint(ps);
 }
 
 /// Reverses every face with flip[f] == 1; returns how many.
@@ -382,6 +404,32 @@ TriangleSoup prepare_soup(TriangleSoup soup, const PrepareOptions& opt, const st
     return soup;
 }
 
+std::vector<uint32_t> face_components(const TriangleSoup& soup, uint32_t* count) {
+    Analysis a(soup);
+    std::vector<uint32_t> id(soup.triangles.size(), kNo), of_root(soup.triangles.size(), kNo);
+    uint32_t next = 0;
+    for (std::size_t f = 0; f < id.size(); ++f)
+        if (a.comp[f] != kNo) {
+            if (of_root[a.comp[f]] == kNo) of_root[a.comp[f]] = next++;
+            id[f] = of_root[a.comp[f]];
+        }
+    if (count) *count = next;
+    return id;
+}
+
+uint64_t unwelded_vertices(const TriangleSoup& soup) {
+    const std::vector<uint32_t> rep = weld_map(soup.points);
+    std::vector<char> seen(soup.points.size(), 0);
+    uint64_t n = 0;
+    for (const Triangle& t : soup.triangles)
+        for (uint32_t v : t)
+            if (v < rep.size() && rep[v] != v && !seen[v]) {
+                seen[v] = 1;
+                ++n;
+            }
+    return n;
+}
+
 MeshInfo mesh_info(const TriangleSoup& soup) {
     Analysis a(soup);
     MeshInfo info;
@@ -405,6 +453,7 @@ MeshInfo mesh_info(const TriangleSoup& soup) {
     info.orientable = a.orientable;
     info.oriented = a.oriented;
     info.problems = a.problems();
+    info.unwelded_vertices = unwelded_vertices(soup);
     // Genus by chi = 2c - 2g - b, meaningful for a manifold orientable surface.
     info.genus_valid = a.orientable && a.non_manifold_edges == 0 && a.nm_vertex.total == 0 && info.components >= 1 &&
                        a.out_of_range.total == 0 && a.repeated.total == 0;

@@ -25,7 +25,26 @@ namespace singlestrip {
 namespace {
 
 constexpr uint32_t kNo = 0xffffffffu;
-constexpr double kRelTol = 1e-9;
+// Relative tolerance of every geometric test: 1e-9, or 1e-5 while verify() checks float32
+// (glTF) positions. A thread-local set by verify() itself keeps the helpers' signatures.
+thread_local double kRelTol = 1e-9;
+// Float32 mode: positions carry rounding of about one float ulp of the coordinates, so every
+// distance test also allows kFloatSlack times the largest coordinate involved.
+thread_local double kFloatSlack = 0;
+
+struct ToleranceScope {
+    explicit ToleranceScope(bool float32) : saved(kRelTol), saved_slack(kFloatSlack) {
+        kRelTol = float32 ? 1e-5 : 1e-9;
+        kFloatSlack = float32 ? 4.0 / (1 << 23) : 0.0;
+    }
+    ~ToleranceScope() {
+        kRelTol = saved;
+        kFloatSlack = saved_slack;
+    }
+    ToleranceScope(const ToleranceScope&) = delete;
+    ToleranceScope& operator=(const ToleranceScope&) = delete;
+    double saved, saved_slack;
+};
 constexpr size_t kMaxPerCheck = 20;  // failure lines kept per check; the rest are counted
 
 // --- tiny vector algebra ------------------------------------------------------------------
@@ -291,6 +310,7 @@ struct ParentFrame {
     /// coordinates divide by |n|^2 and lose about log10(size^2/|n|) digits, and the normal's
     /// direction is noise, so such parents get the robust tests of sliver_contains() instead.
     bool ill = false;
+    double slack = 0;  ///< float32 mode: absolute rounding allowance in these units
 };
 
 ParentFrame frame_of(const std::vector<Point3>& pts, const Triangle& t) {
@@ -315,7 +335,8 @@ ParentFrame frame_of(const std::vector<Point3>& pts, const Triangle& t) {
     double m = 0;
     for (const V3* q : {&p.a, &p.b, &p.c})
         for (double x : *q) m = std::max(m, std::abs(x));
-    p.area_tol = kRelTol * p.size * p.size + 64 * std::numeric_limits<double>::epsilon() * m * p.size;
+    p.slack = kFloatSlack * m;
+    p.area_tol = kRelTol * p.size * p.size + 64 * std::numeric_limits<double>::epsilon() * m * p.size + 8 * p.slack * p.size;
     p.ill = !(std::sqrt(p.n2) > 1e-6 * p.size * p.size);
     return p;
 }
@@ -380,7 +401,10 @@ bool on_segment(const V3& wu, const V3& wv, const V3& wq, double* t_out = nullpt
     const double t = seg_param(u, v, q, dist);
     const double len = norm(sub(v, u));
     if (t_out) *t_out = t;
-    return dist <= kRelTol * len && t >= -kRelTol && t <= 1 + kRelTol;
+    const double slack =
+        kFloatSlack * std::max({std::abs(u[0]), std::abs(u[1]), std::abs(u[2]), std::abs(v[0]), std::abs(v[1]), std::abs(v[2])});
+    const double t_slack = len > 0 ? slack / len : 0.0;
+    return dist <= kRelTol * len + slack && t >= -kRelTol - t_slack && t <= 1 + kRelTol + t_slack;
 }
 
 uint32_t common_vertices(const Triangle& a, const Triangle& b, std::array<uint32_t, 3>& out) {
@@ -526,14 +550,48 @@ std::vector<uint32_t> infer_parents(const VerifyInput& in, const Adjacency& out,
 
 // --- GL strip decoding (own implementation) -------------------------------------------------
 
-std::vector<Triangle> gl_decode(const std::vector<uint32_t>& s) {
+// Pieces between restart values are separate strips, each starting at even parity.
+std::vector<Triangle> gl_decode(const std::vector<uint32_t>& s, uint32_t restart) {
     std::vector<Triangle> out;
-    for (size_t i = 0; i + 2 < s.size(); ++i) {
-        const uint32_t a = s[i], b = s[i + 1], c = s[i + 2];
+    size_t piece = 0;
+    for (size_t i = 0; i < s.size(); ++i) {
+        if (s[i] == restart) {
+            piece = i + 1;
+            continue;
+        }
+        if (i < piece + 2 || s[i - 1] == restart || s[i - 2] == restart) continue;
+        const uint32_t a = s[i - 2], b = s[i - 1], c = s[i];
         if (a == b || b == c || a == c) continue;
-        out.push_back((i % 2 == 0) ? Triangle{a, b, c} : Triangle{b, a, c});
+        out.push_back(((i - 2 - piece) % 2 == 0) ? Triangle{a, b, c} : Triangle{b, a, c});
     }
     return out;
+}
+
+/// Edge-connected component of every output face (through manifold twins), numbered in order of
+/// first appearance; `count` gets their number.
+std::vector<uint32_t> out_components(const Adjacency& out, size_t& count) {
+    const size_t F = out.faces.size();
+    std::vector<uint32_t> comp(F, kNo);
+    count = 0;
+    std::vector<uint32_t> stack;
+    for (uint32_t s = 0; s < F; ++s) {
+        if (comp[s] != kNo) continue;
+        comp[s] = static_cast<uint32_t>(count);
+        stack.assign(1, s);
+        while (!stack.empty()) {
+            const uint32_t f = stack.back();
+            stack.pop_back();
+            for (uint32_t k = 0; k < 3; ++k) {
+                const uint32_t t = out.twin[3 * f + k];
+                if (t != kNo && comp[t / 3] == kNo) {
+                    comp[t / 3] = static_cast<uint32_t>(count);
+                    stack.push_back(t / 3);
+                }
+            }
+        }
+        ++count;
+    }
+    return comp;
 }
 
 // --- cycles -----------------------------------------------------------------------------------
@@ -761,6 +819,7 @@ std::string VerifyReport::to_string() const {
     if (ok()) {
         os << "OK: " << output_faces << " output faces (" << input_faces << " input), Euler characteristic " << euler_characteristic << ", "
            << boundary_loops << " boundary loop(s), genus " << genus;
+        if (strips > 1) os << ", " << strips << " strips (one per component)";
         if (cycles_checked) os << ", " << cycles_checked << " independent cycles";
         os << "\n";
     } else {
@@ -771,7 +830,12 @@ std::string VerifyReport::to_string() const {
     return os.str();
 }
 
+std::vector<Triangle> verify_decode_strip(const std::vector<uint32_t>& indices, uint32_t restart_index) {
+    return gl_decode(indices, restart_index);
+}
+
 VerifyReport verify(const VerifyInput& in) {
+    const ToleranceScope tolerance(in.float32);
     VerifyReport report;
     Failures fails(report);
     const size_t n = in.in_points.size();
@@ -794,8 +858,15 @@ VerifyReport verify(const VerifyInput& in) {
         fails.add("vertices",
                   "output has " + std::to_string(in.out_points.size()) + " vertices, fewer than the input's " + std::to_string(n));
     }
+    auto as_stored = [&](const Point3& p) {  // what a float32 file can hold of an input vertex
+        return in.float32 ? Point3{static_cast<float>(p[0]), static_cast<float>(p[1]), static_cast<float>(p[2])} : p;
+    };
+    if (in.float32)
+        report.notes.push_back(
+            "float32 positions (glTF): input vertices compared after rounding to float32; geometric tolerances "
+            "1e-5 relative (instead of 1e-9) plus 4 float32 ulps of the coordinates; parents inferred");
     for (size_t v = 0; v < std::min(n, in.out_points.size()); ++v)
-        if (!(in.out_points[v] == in.in_points[v]))
+        if (!(in.out_points[v] == as_stored(in.in_points[v])))
             fails.add("vertices", "vertex " + std::to_string(v) + " moved (input vertices must be unchanged)");
     for (size_t v = 0; v < in.out_points.size(); ++v)
         for (double c : in.out_points[v])
@@ -815,10 +886,6 @@ VerifyReport verify(const VerifyInput& in) {
     report.output_vertices = static_cast<size_t>(out.referenced_vertices);
     report.euler_characteristic = out.euler;
     report.boundary_loops = out.boundary_loops;
-    {
-        const long long h = static_cast<long long>(out.boundary_loops);
-        report.genus = (2 - out.euler - h) / 2;
-    }
     bool all_faces_ok = std::all_of(out.face_ok.begin(), out.face_ok.end(), [](bool b) { return b; });
     if (out.euler != inp.euler)
         fails.add("topology",
@@ -879,8 +946,10 @@ VerifyReport verify(const VerifyInput& in) {
         for (const V3& p : {wa, wb, wc}) {
             double dist = 0;
             const auto l = bary(P, p, dist);
-            if (!(dist <= kRelTol * P.size)) in_plane = false;
-            if (!(std::min({l[0], l[1], l[2]}) >= -kRelTol)) inside = false;
+            if (!(dist <= kRelTol * P.size + P.slack)) in_plane = false;
+            // A barycentric l_i below 0 is a distance -l_i * |n| / |edge_i| outside edge i.
+            const double l_slack = P.slack > 0 ? P.slack * P.size / std::sqrt(P.n2) : 0.0;
+            if (!(std::min({l[0], l[1], l[2]}) >= -kRelTol - l_slack)) inside = false;
         }
         if (!in_plane)
             fails.add("geometry", who + ": not in its parent's plane");
@@ -1004,14 +1073,34 @@ VerifyReport verify(const VerifyInput& in) {
                                             ") is not covered by output boundary edges");
     }
 
-    // ---- strip: consecutive faces share an edge
-    for (uint32_t f = 0; f + 1 < F; ++f) {
-        if (!out.face_ok[f] || !out.face_ok[f + 1]) continue;
-        std::array<uint32_t, 3> common{};
-        const uint32_t k = common_vertices(in.out_faces[f], in.out_faces[f + 1], common);
-        if (k != 2)
-            fails.add("strip", "faces " + std::to_string(f) + " and " + std::to_string(f + 1) + " share " + std::to_string(k) +
-                                   " vertices, not an edge");
+    // ---- strips: one per edge-connected component of the output, each a contiguous run of faces
+    // in which consecutive faces share an edge; a new strip starts exactly where the component changes.
+    size_t num_components = 0;
+    const std::vector<uint32_t> comp = out_components(out, num_components);
+    std::vector<uint32_t> strip_end;  // last face of each strip
+    {
+        std::vector<bool> seen(num_components, false);
+        seen[comp[0]] = true;
+        for (uint32_t f = 0; f + 1 < F; ++f) {
+            if (comp[f + 1] != comp[f]) {
+                strip_end.push_back(f);
+                if (seen[comp[f + 1]])
+                    fails.add("strip", "face " + std::to_string(f + 1) +
+                                           " returns to an edge-connected component already stripped "
+                                           "(each component must be one contiguous strip)");
+                seen[comp[f + 1]] = true;
+                continue;
+            }
+            if (!out.face_ok[f] || !out.face_ok[f + 1]) continue;
+            std::array<uint32_t, 3> common{};
+            const uint32_t k = common_vertices(in.out_faces[f], in.out_faces[f + 1], common);
+            if (k != 2)
+                fails.add("strip", "faces " + std::to_string(f) + " and " + std::to_string(f + 1) + " share " + std::to_string(k) +
+                                       " vertices, not an edge");
+        }
+        strip_end.push_back(static_cast<uint32_t>(F - 1));
+        report.strips = strip_end.size();
+        report.genus = (2 * static_cast<long long>(num_components) - out.euler - static_cast<long long>(out.boundary_loops)) / 2;
     }
 
     // ---- index sequence
@@ -1019,13 +1108,13 @@ VerifyReport verify(const VerifyInput& in) {
         const auto& s = *in.indices;
         bool range_ok = true;
         for (size_t i = 0; i < s.size(); ++i)
-            if (s[i] >= in.out_points.size()) {
+            if (s[i] >= in.out_points.size() && s[i] != in.restart_index) {
                 fails.add("indices", "index " + std::to_string(i) + " = " + std::to_string(s[i]) + " out of range (" +
                                          std::to_string(in.out_points.size()) + " vertices)");
                 range_ok = false;
             }
         if (range_ok) {
-            const auto dec = gl_decode(s);
+            const auto dec = gl_decode(s, in.restart_index);
             if (dec.size() != F)
                 fails.add("indices",
                           "index sequence decodes to " + std::to_string(dec.size()) + " triangles, the output has " + std::to_string(F));
@@ -1111,19 +1200,24 @@ VerifyReport verify(const VerifyInput& in) {
             fails.add("source",
                       "first face 0 " + tri_str(in.out_faces[0]) + " does not contain source vertex " + std::to_string(*in.source));
     }
-    if (in.target) {
+    if (in.target) {  // the end of the first strip (the whole output when there is one)
+        const uint32_t last = strip_end.front();
         if (*in.target >= n)
             fails.add("target", "target vertex " + std::to_string(*in.target) + " is not an input vertex");
-        else if (!has_vertex(static_cast<uint32_t>(F - 1), *in.target))
-            fails.add("target", "last face " + std::to_string(F - 1) + " " + tri_str(in.out_faces[F - 1]) +
-                                    " does not contain target vertex " + std::to_string(*in.target));
+        else if (!has_vertex(last, *in.target))
+            fails.add("target", "last face " + std::to_string(last) + " " + tri_str(in.out_faces[last]) +
+                                    " of the first strip does not contain target vertex " + std::to_string(*in.target));
     }
 
     // ---- cycles
     if (in.cycles) {
         const long long h = static_cast<long long>(inp.boundary_loops);
         const long long expected = h > 0 ? 1 - inp.euler : 2 - inp.euler;
-        if (!out.manifold || !all_faces_ok) {
+        if (num_components > 1) {
+            report.cycles_checked = in.cycles->size();
+            report.notes.push_back("cycles: not checked (the output has " + std::to_string(num_components) +
+                                   " components; the cycle check covers one)");
+        } else if (!out.manifold || !all_faces_ok) {
             report.cycles_checked = in.cycles->size();
             if (static_cast<long long>(in.cycles->size()) != expected)
                 fails.add("cycles", "found " + std::to_string(in.cycles->size()) + " cycles, expected " + std::to_string(expected));
@@ -1135,31 +1229,6 @@ VerifyReport verify(const VerifyInput& in) {
 
     fails.finish();
     return report;
-}
-
-VerifyReport verify_files(const std::string& in_path, const std::string& out_path, const VerifyFileOptions& options) {
-    ReadOptions read;
-    read.format = options.input_format;
-    return verify_files(read_mesh_file(in_path, read), out_path, options);
-}
-
-VerifyReport verify_files(TriangleSoup input, const std::string& out_path, const VerifyFileOptions& options) {
-    VerifyInput vi;
-    vi.in_points = std::move(input.points);
-    vi.in_faces = std::move(input.triangles);
-    {
-        OutputMesh om = read_output_mesh(out_path);
-        vi.out_points = std::move(om.points);
-        vi.out_faces = std::move(om.faces);
-        vi.out_parent = std::move(om.parent);
-    }
-    if (options.indices_path) vi.indices = read_index_file(*options.indices_path);
-    if (options.constraints_path)
-        vi.constraints = read_constraints_based(*options.constraints_path, static_cast<uint32_t>(vi.in_points.size()), options.index_base);
-    vi.source = options.source;
-    vi.target = options.target;
-    if (options.cycles_path) vi.cycles = read_cycles_file(*options.cycles_path);
-    return verify(vi);
 }
 
 }  // namespace singlestrip

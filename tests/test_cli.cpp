@@ -84,12 +84,18 @@ TEST(Cli, InfoExitCodesAndReport) {
     EXPECT_EQ(fixed.code, 0) << fixed.out;
 
     CliRun js = cli("info --json " + q(data("two_components.off")));
-    EXPECT_EQ(js.code, 3) << js.out;
+    EXPECT_EQ(js.code, 0) << js.out;  // several components: one strip each
     auto j = nlohmann::json::parse(js.out);
     EXPECT_EQ(j["components"], 3);
-    EXPECT_EQ(j["valid"], false);
-    ASSERT_FALSE(j["problems"].empty());
-    EXPECT_EQ(j["problems"][0]["kind"], "components");
+    EXPECT_EQ(j["valid"], true);
+    EXPECT_TRUE(j["problems"].empty());
+
+    CliRun dup = cli("info --json " + q(data("duplicate_face.off")));
+    EXPECT_EQ(dup.code, 3) << dup.out;
+    CliRun rep = cli("info --json --repair " + q(data("duplicate_face.off")));
+    EXPECT_EQ(rep.code, 0) << rep.out;
+    const auto rj = nlohmann::json::parse(rep.out.substr(rep.out.find('{')));
+    EXPECT_EQ(rj["repair"]["duplicate_faces"], 1);
 
     CliRun moebius = cli("info --orient --json " + q(data("moebius.off")));
     EXPECT_EQ(moebius.code, 3);
@@ -200,7 +206,7 @@ TEST(Cli, RenderStripsAnInputWithTheEngine) {
 
 TEST(Cli, InvalidInputLeavesNoOutput) {
     Scratch s("noout");
-    for (const char* f : {"moebius.off", "non_manifold_edge.off", "two_components.off", "tetra_one_flipped.off"}) {
+    for (const char* f : {"moebius.off", "non_manifold_edge.off", "repeated_vertex.off", "tetra_one_flipped.off"}) {
         SCOPED_TRACE(f);
         CliRun r = cli("strip " + q(data(f)) + " -o " + q(s / "o.ply") + " --indices " + q(s / "i.txt") + " --report " + q(s / "r.json"));
         EXPECT_EQ(r.code, 3) << r.out;
@@ -250,8 +256,73 @@ TEST(CliReal, FandiskStripsAndVerifies) {
     EXPECT_EQ(nlohmann::json::parse(slurp(s / "f.json"))["input_triangles"], 12946);
     CliRun v = cli("verify " + q(fandisk) + " " + q(s / "f.ply") + " --indices " + q(s / "f.txt"));
     EXPECT_EQ(v.code, 0) << v.out;
-    const std::string broken = singlestrip::test::cgal_mesh_path("blobby_3cc.off");
-    CliRun b = cli("strip " + q(broken) + " -o " + q(s / "b.ply"));
-    EXPECT_EQ(b.code, 3) << b.out;
-    EXPECT_NE(b.out.find("3 edge-connected components"), std::string::npos) << b.out;
+    // Several components: three strips, verified with the index file.
+    const std::string three = singlestrip::test::cgal_mesh_path("blobby_3cc.off");
+    CliRun b = cli("strip " + q(three) + " -o " + q(s / "b.ply") + " --indices " + q(s / "b.txt"));
+    EXPECT_EQ(b.code, 0) << b.out;
+    EXPECT_NE(b.out.find("3 strips"), std::string::npos) << b.out;
+    CliRun bv = cli("verify " + q(three) + " " + q(s / "b.ply") + " --indices " + q(s / "b.txt"));
+    EXPECT_EQ(bv.code, 0) << bv.out;
+}
+
+TEST(CliReal, RepairStripsARefusedMeshAndVerifyReplaysIt) {
+    const std::string pig = singlestrip::test::cgal_mesh_path("pig.stl");
+    if (pig.empty()) GTEST_SKIP() << "libcgal-demo data not available";
+    Scratch s("repair");
+    CliRun refused = cli("strip " + q(pig) + " -o " + q(s / "p.ply"));
+    EXPECT_EQ(refused.code, 3) << refused.out;
+    EXPECT_NE(refused.out.find("(fix: --repair"), std::string::npos) << refused.out;
+    CliRun r = cli("strip " + q(pig) + " --repair -o " + q(s / "p.ply") + " --indices " + q(s / "p.txt") + " --join restart --report " +
+                   q(s / "p.json"));
+    ASSERT_EQ(r.code, 0) << r.out;
+    EXPECT_NE(r.out.find("repair: "), std::string::npos) << r.out;
+    const auto j = nlohmann::json::parse(slurp(s / "p.json"));
+    EXPECT_GT(j["repair"]["vertex_copies"].get<int>(), 0);
+    EXPECT_EQ(j["repair"]["elements"]["copied_from"].size(), j["repair"]["vertex_copies"].get<size_t>());
+    EXPECT_EQ(j["strips"].get<size_t>(), j["components"].size());
+    EXPECT_EQ(j["options"]["join"], "restart");
+    CliRun v = cli("verify " + q(pig) + " " + q(s / "p.ply") + " --indices " + q(s / "p.txt") + " --repair");
+    EXPECT_EQ(v.code, 0) << v.out;
+    EXPECT_NE(v.out.find("depends on the library"), std::string::npos) << v.out;
+    CliRun plain = cli("verify " + q(pig) + " " + q(s / "p.ply"));
+    EXPECT_EQ(plain.code, 5) << plain.out;  // against the unrepaired input the check cannot pass
+}
+
+TEST(Cli, UnweldedSoupHintsWeldAndOrientFollowsTheMajority) {
+    Scratch s("weld");
+    // A tetrahedron written as a soup: every face with its own three vertices.
+    std::string off = "OFF\n12 4 0\n";
+    const double P[4][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    const int F[4][3] = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+    for (const auto& f : F)
+        for (int v : f) off += std::to_string(P[v][0]) + " " + std::to_string(P[v][1]) + " " + std::to_string(P[v][2]) + "\n";
+    for (int f = 0; f < 4; ++f)
+        off += "3 " + std::to_string(3 * f) + " " + std::to_string(3 * f + 1) + " " + std::to_string(3 * f + 2) + "\n";
+    { std::ofstream(s / "soup.off") << off; }
+    CliRun r = cli("strip " + q(s / "soup.off") + " -o " + q(s / "o.ply"));
+    EXPECT_EQ(r.code, 0) << r.out;
+    EXPECT_NE(r.out.find("4 strips"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("--weld"), std::string::npos) << r.out;
+    CliRun w = cli("strip " + q(s / "soup.off") + " --weld -o " + q(s / "o.ply"));
+    EXPECT_EQ(w.code, 0) << w.out;
+    EXPECT_NE(w.out.find("1 strip of"), std::string::npos) << w.out;
+    EXPECT_EQ(cli("verify " + q(s / "soup.off") + " " + q(s / "o.ply") + " --weld").code, 0);
+}
+
+TEST(Cli, GltfSceneInAndOut) {
+    Scratch s("gltfin");
+    const std::string scene = data("scene.gltf");
+    CliRun r = cli("strip " + q(scene) + " -o " + q(s / "o.glb") + " --report " + q(s / "r.json"));
+    ASSERT_EQ(r.code, 0) << r.out;
+    EXPECT_NE(r.out.find("mesh 2 primitive 0: kept as it was"), std::string::npos) << r.out;
+    const auto j = nlohmann::json::parse(slurp(s / "r.json"));
+    ASSERT_EQ(j["primitives"].size(), 4u);
+    EXPECT_EQ(j["primitives"][0]["stripped"], true);
+    EXPECT_EQ(cli("strip " + q(scene) + " -o " + q(s / "o2.glb") + " --indices " + q(s / "i.txt")).code, 4);
+    // Any other output: all triangle primitives as one mesh, verified like any input.
+    EXPECT_EQ(cli("info " + q(data("scene.glb"))).code, 0);
+    CliRun p = cli("strip " + q(data("scene.glb")) + " -o " + q(s / "o.ply") + " --indices " + q(s / "o.txt"));
+    ASSERT_EQ(p.code, 0) << p.out;
+    CliRun v = cli("verify " + q(data("scene.glb")) + " " + q(s / "o.ply") + " --indices " + q(s / "o.txt"));
+    EXPECT_EQ(v.code, 0) << v.out;
 }

@@ -156,8 +156,13 @@ TEST(CliJobs, GlbOutputDecodesToTheSameStripAsPly) {
     const std::string in = src("tests/data/tetra.off");
     EXPECT_EQ(cli("strip '" + in + "' -o '" + (d / "t.glb").string() + "'").code, 0);
     EXPECT_GT(fs::file_size(d / "t.glb"), 100u);
-    // verify reads .ply/.obj/.off results and says so for glTF (float32 positions).
+    // verify checks a glTF result with float32 tolerances, and says so.
     const CliResult v = cli("verify '" + in + "' '" + (d / "t.glb").string() + "'");
-    EXPECT_EQ(v.code, 4) << v.out;
+    EXPECT_EQ(v.code, 0) << v.out;
+    EXPECT_NE(v.out.find("float32"), std::string::npos) << v.out;
+    // ... and still catches a wrong one: the strip of another mesh.
+    EXPECT_EQ(cli("strip '" + src("tests/data/pyramid_quad.off") + "' -o '" + (d / "p.glb").string() + "'").code, 0);
+    const CliResult w = cli("verify '" + in + "' '" + (d / "p.glb").string() + "'");
+    EXPECT_EQ(w.code, 5) << w.out;
     fs::remove_all(d);
 }

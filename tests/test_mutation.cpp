@@ -139,6 +139,11 @@ std::string check_file(const std::string& path, const std::string& label, Tally&
     }
     if (auto p = fuzzcheck::check_soup(soup); !p.empty()) return label + ": " + p;
     fuzzcheck::Outcome outcome;
+    // --repair must turn every readable soup into verified strips (or refuse it for no faces).
+    fuzzcheck::Request repaired;
+    repaired.repair = true;
+    repaired.cycles = false;
+    if (auto p = fuzzcheck::check_pipeline(soup, repaired, &outcome); !p.empty()) return label + " (--repair): " + p;
     if (auto p = fuzzcheck::check_pipeline(std::move(soup), {}, &outcome); !p.empty()) return label + ": " + p;
     ++(outcome == fuzzcheck::Outcome::Stripped ? t.stripped : t.refused);
     if (std::FILE* log = outcome_log())

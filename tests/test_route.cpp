@@ -80,12 +80,28 @@ TEST(Route, OneFaceIsOnePoint) {
     EXPECT_EQ(route_text(route, RouteFormat::Obj).find("\nl "), std::string::npos);
 }
 
-TEST(Route, ConsecutiveFacesMustShareAnEdge) {
+TEST(Route, FacesThatShareNoEdgeStartANewStrip) {
+    // Several components give several strips: the route jumps between them (kind "start"),
+    // the jump is not counted in the length, and OBJ / GeoJSON get one polyline per strip.
     StripArrays a;
-    a.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {5, 5, 0}, {6, 5, 0}, {5, 6, 0}};
-    a.faces = {{0, 1, 2}, {3, 4, 5}};
-    a.parent = {0, 1};
-    EXPECT_THROW(strip_route(a), InternalError);
+    a.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}, {5, 5, 0}, {6, 5, 0}, {5, 6, 0}};
+    a.faces = {{0, 1, 2}, {2, 1, 3}, {4, 5, 6}};
+    a.parent = {0, 1, 2};
+    const Route r = strip_route(a);
+    ASSERT_EQ(r.points.size(), 4u);  // c0, m01, c1, then c2 (no midpoint across the gap)
+    EXPECT_FALSE(r.points[2].jump);
+    EXPECT_TRUE(r.points[3].jump);
+    EXPECT_EQ(r.points[3].distance, r.points[2].distance);
+    EXPECT_EQ(r.length, r.points[2].distance);
+    EXPECT_NE(route_text(r, RouteFormat::Csv).find(",start,"), std::string::npos);
+    const std::string obj = route_text(r, RouteFormat::Obj);
+    EXPECT_NE(obj.find("\nl 1 2 3\n"), std::string::npos) << obj;
+    EXPECT_EQ(obj.find("route_1"), std::string::npos) << obj;  // a one-point strip is no polyline
+    const auto g = nlohmann::json::parse(route_text(r, RouteFormat::GeoJson));
+    EXPECT_EQ(g["features"].size(), 2u);
+    StripArrays bad = a;
+    bad.parent.pop_back();
+    EXPECT_THROW(strip_route(bad), InternalError);
 }
 
 TEST(Route, FormatsByExtensionAndName) {

@@ -28,6 +28,7 @@
 #include <string>
 #include <vector>
 
+#include "singlestrip/encode.hpp"
 #include "singlestrip/strip.hpp"
 
 namespace singlestrip {
@@ -42,6 +43,9 @@ struct BatchOptions {
     StripEngine engine = StripEngine::Matching;  ///< StripOptions::engine
     bool greedy = true;                          ///< StripOptions::greedy
     bool orient = false;                         ///< PrepareOptions::orient
+    bool weld = false;                           ///< PipelineOptions::weld
+    bool repair = false;                         ///< PipelineOptions::repair
+    JoinMode join = JoinMode::Degenerate;        ///< PipelineOptions::join
     std::optional<uint32_t> seed_face;           ///< applied to every file (out of range: that file fails)
     unsigned threads = 0;                        ///< 0 = std::thread::hardware_concurrency()
     bool progress = true;                        ///< progress bar on stderr, only when it is a terminal

@@ -4,9 +4,12 @@
 // Keys: input, output (when given); engine (the engine that built the strip, or the requested
 // one for a failed run); input_triangles, output_triangles, splits, swaps, strip_indices,
 // indices_per_triangle, extra_percent, genus, boundary_loops, fundamental_triangles,
-// deferred_regions (when there is a result); cycles, cycle_lengths, cycle_faces_total (when cycles were computed);
-// options {engine, greedy, orient, constraint_edges, seed_face, source, target (the last three
-// when set)}; seconds {read, build, strip, write} (when asked); and for batch mode ok,
+// deferred_regions, strips (one per edge-connected component), components [{input_triangles,
+// output_triangles, splits, genus, boundary_loops, first_face, strip_indices}, ...] (output order),
+// repair (when --repair: repair_json() below), welded_vertices (when --weld), warnings (when
+// any) (all when there is a result); cycles, cycle_lengths, cycle_faces_total (when cycles were computed);
+// options {engine, greedy, orient, repair, weld, join, restart_index (restart joins), constraint_edges,
+// seed_face, source, target (the last three when set)}; seconds {read, build, strip, write} (when asked); and for batch mode ok,
 // exit_code, error (when failed) and seconds (the file's total time).
 #pragma once
 
@@ -33,6 +36,12 @@ struct ReportInput {
     bool stage_seconds = false;                ///< "seconds": result->seconds per stage
     std::optional<RunOutcome> outcome;         ///< batch: ok, exit_code, error, seconds
 };
+
+/// What repair changed as JSON: summary (text), changed, counts (welded_vertices,
+/// invalid_faces, degenerate_faces, duplicate_faces, non_manifold_edges, split_vertices,
+/// vertex_copies, orientation_cuts, non_orientable_components, flipped_faces, turned_outward,
+/// components) and "elements" with the lists (repair.hpp RepairReport). O(elements).
+std::string repair_json(const RepairReport& report);
 
 /// The report as pretty-printed JSON (2-space indent) ending in a newline.
 /// \pre options or result is set. \throw InternalError if neither is. O(cycles).

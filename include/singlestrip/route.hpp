@@ -6,6 +6,10 @@
 // through each face's centroid c_i and the midpoint m_{i,i+1} of the edge it shares with the next
 // face, so every segment lies inside one face and the route never crosses a constraint edge
 // (consecutive strip faces never share one). A one-face strip is the single point c0.
+// An output with several strips (one per component, pipeline.hpp) gives one such polyline per
+// strip, one after the other: the first centroid of each later strip has `jump` set (kind
+// "start"), the move to it leaves the surface and is not counted in `length` or `distance`; the
+// OBJ file has one `l` record and the GeoJSON one LineString Feature per strip.
 //
 // Files (write_route, chosen by extension or by `format`):
 //   .csv      header "x,y,z,face,parent,kind,distance", one row per point;
@@ -34,7 +38,8 @@ struct RoutePoint {
     uint32_t face = 0;      ///< output face (strip position)
     uint32_t parent = 0;    ///< input triangle that face lies in
     bool centroid = true;   ///< false: midpoint of the edge shared with face + 1
-    double distance = 0.0;  ///< route length from the first point to this one
+    double distance = 0.0;  ///< route length from the first point to this one (jumps not counted)
+    bool jump = false;      ///< first point of a later strip: reached by a move off the surface
 };
 
 struct Route {
@@ -45,7 +50,8 @@ struct Route {
 
 /// The route of a strip (see the top of this header).
 /// \pre `arrays` comes from strip_arrays(): faces in strip order, parent.size() == faces.size().
-/// \throw InternalError when two consecutive faces share no edge or the sizes disagree.
+/// Consecutive faces that share no edge start a new strip (see above).
+/// \throw InternalError when the sizes disagree.
 /// Complexity O(F).
 Route strip_route(const StripArrays& arrays);
 

@@ -22,15 +22,18 @@
 //     T-junction (every output edge with one face lies on an input boundary edge and the output
 //     boundary edges tile each input boundary edge exactly); same Euler characteristic and
 //     number of boundary loops as the input (referenced vertices only);
-//   * strip: consecutive faces share an edge (two common vertices);
+//   * strips: one per edge-connected component of the output, each a contiguous run of faces
+//     in which consecutive faces share an edge (two common vertices);
 //   * indices (optional): the standard GL_TRIANGLE_STRIP decoding (triangle i = s[i],s[i+1],
-//     s[i+2], odd i flipped, triangles with a repeated index skipped) gives exactly out_faces,
-//     in order, each with the same cyclic vertex order;
+//     s[i+2], odd i flipped, triangles with a repeated index skipped; `restart_index` ends a
+//     strip and the next starts at even parity) gives exactly out_faces, in order, each with the
+//     same cyclic vertex order (degenerate joins between strips decode to nothing);
 //   * constraints (optional): every pair is an input edge; no two consecutive faces share a
 //     constraint edge or a piece of one; no constraint edge is split (the edge is an output
 //     edge and no output vertex lies strictly inside it);
-//   * source/target (optional): the first face has vertex `source`, the last has `target`;
-//   * cycles (optional): each cycle is a closed chain of edge-adjacent output faces; there are
+//   * source/target (optional): the first face has vertex `source`, the last face of the first
+//     strip has `target`;
+//   * cycles (optional; one-component outputs only, else a note): each cycle is a closed chain of edge-adjacent output faces; there are
 //     2g+h-1 of them (2g for a closed surface); they are linearly independent in H1(M; Z2),
 //     tested by their intersection parities with a basis of H1(M, dM) built by tree-cotree on
 //     the output mesh, Gaussian elimination over Z2 (rank must equal the count).
@@ -68,7 +71,14 @@ struct VerifyInput {
     std::optional<uint32_t> source;
     std::optional<uint32_t> target;
     std::optional<std::vector<std::vector<uint32_t>>> cycles;  ///< face-index chains into out_faces
+    uint32_t restart_index = 0xffffffffu;                      ///< primitive restart value in `indices`
+    /// out_points are float32 (a glTF output): input vertices are compared after rounding to
+    /// float32 and every geometric tolerance is 1e-5 (relative) instead of 1e-9; a note says so.
+    bool float32 = false;
 };
+
+/// The verifier's own GL_TRIANGLE_STRIP decoder (see "indices" above). O(n).
+std::vector<Triangle> verify_decode_strip(const std::vector<uint32_t>& indices, uint32_t restart_index = 0xffffffffu);
 
 struct VerifyReport {
     std::vector<std::string> failures;  ///< one line per violated property (capped per check)
@@ -79,7 +89,8 @@ struct VerifyReport {
     size_t output_vertices = 0;          ///< referenced output vertices
     long long euler_characteristic = 0;  ///< of the output (referenced vertices)
     size_t boundary_loops = 0;           ///< of the output
-    long long genus = 0;                 ///< of the output, from Euler characteristic and loops
+    long long genus = 0;                 ///< of the output (summed over components), from Euler characteristic and loops
+    size_t strips = 0;                   ///< strips found (one per edge-connected component)
     size_t cycles_checked = 0;
     size_t cycle_rank = 0;  ///< Z2 rank of the cycles (when computed)
     [[nodiscard]] bool ok() const noexcept { return failures.empty(); }
@@ -92,6 +103,18 @@ struct VerifyReport {
 /// \throw std::bad_alloc only.
 VerifyReport verify(const VerifyInput& input);
 
+/// The input steps a strip run was asked for (`strip --weld / --repair / --orient`).
+struct InputSteps {
+    bool weld = false, repair = false, orient = false;
+};
+
+/// Makes vi.in_points / vi.in_faces the input the strip was built from: the SAME steps replayed
+/// with the library's own weld_soup / repair_soup / orient_soup (repair.hpp, validate.hpp) —
+/// this part of the check depends on the library, not on independent code. vi.out_parent
+/// (input face ids) is mapped to the repaired faces (a dropped face maps out of range, which
+/// verify() reports). Returns notes saying what the replay changed. Complexity: repair_soup().
+std::vector<std::string> replay_input_steps(VerifyInput& vi, const InputSteps& steps);
+
 /// Optional extra files for verify_files().
 struct VerifyFileOptions {
     std::optional<std::string> indices_path;      ///< whitespace-separated GL_TRIANGLE_STRIP indices
@@ -100,12 +123,17 @@ struct VerifyFileOptions {
     std::optional<uint32_t> target;
     std::optional<std::string> cycles_path;  ///< JSON {"cycles": [[face, ...], ...]}
     std::string input_format;                ///< ReadOptions::format for the input mesh
+    uint32_t restart_index = 0xffffffffu;    ///< restart value in the indices file
+    InputSteps steps;                        ///< --weld / --repair / --orient of the strip run
     uint32_t index_base = 0;                 ///< vertex numbers in constraints_path start at 0 or 1
 };
 
+/// A glTF OUT (.glb/.gltf written by `strip`, one TRIANGLE_STRIP primitive) is read with
+/// read_gltf_strip() (gltf.hpp, tinygltf), its faces decoded by verify_decode_strip(), parents
+/// inferred, and checked with VerifyInput::float32.
 /// Reads the input mesh (read_mesh_file), the output mesh (read_output_mesh) and the optional
-/// files, then runs verify(). Parents come from the PLY `parent` property when present, else
-/// they are inferred geometrically.
+/// files, then runs verify() (after the weld / repair / orient replay asked for). Parents come
+/// from the PLY `parent` property when present, else they are inferred geometrically.
 /// \throw InputError (naming the file) when a file is missing, unreadable or malformed; the
 ///        verification results themselves are never thrown, they are in the report.
 VerifyReport verify_files(const std::string& in_path, const std::string& out_path, const VerifyFileOptions& options = {});

@@ -20,7 +20,7 @@ std::string num(double v) {
 }
 
 const char* kind(const RoutePoint& p) {
-    return p.centroid ? "centroid" : "edge";
+    return p.jump ? "start" : p.centroid ? "centroid" : "edge";
 }
 
 std::string csv(const Route& r) {
@@ -46,29 +46,51 @@ std::string obj(const Route& r) {
     std::string s = "# singlestrip route: " + std::to_string(r.points.size()) + " points through face centroids and shared-edge " +
                     "midpoints, length " + num(r.length) + "\n";
     for (const RoutePoint& p : r.points) s += "v " + num(p.position[0]) + ' ' + num(p.position[1]) + ' ' + num(p.position[2]) + '\n';
-    if (r.points.size() >= 2) {  // a single point is not a polyline
-        s += "o route\nl";
-        for (size_t i = 1; i <= r.points.size(); ++i) s += ' ' + std::to_string(i);
-        s += '\n';
+    // One `l` record per strip (jumps start a new one); a single point is not a polyline.
+    for (size_t b = 0, strip = 0; b < r.points.size(); ++strip) {
+        size_t e = b + 1;
+        while (e < r.points.size() && !r.points[e].jump) ++e;
+        if (e - b >= 2) {
+            s += strip == 0 ? "o route\nl" : "o route_" + std::to_string(strip) + "\nl";
+            for (size_t i = b + 1; i <= e; ++i) s += ' ' + std::to_string(i);
+            s += '\n';
+        }
+        b = e;
     }
     return s;
+}
+
+/// One LineString Feature for points [b, e) of the route.
+std::string geojson_feature(const Route& r, size_t b, size_t e, size_t strip) {
+    std::string coords, faces;
+    for (size_t i = b; i < e; ++i) {
+        const RoutePoint& p = r.points[i];
+        coords += std::string(i > b ? ", " : "") + '[' + num(p.position[0]) + ", " + num(p.position[1]) + ']';
+        faces += std::string(i > b ? ", " : "") + std::to_string(p.face);
+    }
+    // A LineString needs two positions: a one-face strip repeats its point.
+    if (e - b == 1) coords += ", " + coords;
+    const double length = (e < r.points.size() ? r.points[e - 1].distance : r.length) - r.points[b].distance;
+    return "{\"type\": \"Feature\",\n \"geometry\": {\"type\": \"LineString\", \"coordinates\": [" + coords +
+           "]},\n \"properties\": {\"name\": \"singlestrip route" + (strip ? " " + std::to_string(strip) : std::string()) +
+           "\", \"length\": " + num(length) + ", \"z\": " + num(r.points[b].position[2]) + ", \"faces\": [" + faces + "]}}";
 }
 
 std::string geojson(const Route& r) {
     if (!r.planar_z)
         throw RequestError("route: GeoJSON needs a mesh that is planar in z (a floor plan); write .csv, .json or .obj for a 3D surface");
-    std::string coords, faces;
-    for (size_t i = 0; i < r.points.size(); ++i) {
-        const RoutePoint& p = r.points[i];
-        coords += std::string(i ? ", " : "") + '[' + num(p.position[0]) + ", " + num(p.position[1]) + ']';
-        faces += std::string(i ? ", " : "") + std::to_string(p.face);
+    if (r.points.empty())
+        return "{\"type\": \"FeatureCollection\", \"features\": [{\"type\": \"Feature\",\n \"geometry\": {\"type\": "
+               "\"LineString\", \"coordinates\": []},\n \"properties\": {\"name\": \"singlestrip route\", \"length\": 0, "
+               "\"z\": 0, \"faces\": []}}]}\n";
+    std::string features;
+    for (size_t b = 0, strip = 0; b < r.points.size(); ++strip) {  // one Feature per strip
+        size_t e = b + 1;
+        while (e < r.points.size() && !r.points[e].jump) ++e;
+        features += (strip ? ",\n" : "") + geojson_feature(r, b, e, strip);
+        b = e;
     }
-    // A LineString needs two positions: a one-face strip repeats its point.
-    if (r.points.size() == 1) coords += ", " + coords;
-    return "{\"type\": \"FeatureCollection\", \"features\": [{\"type\": \"Feature\",\n \"geometry\": {\"type\": \"LineString\", "
-           "\"coordinates\": [" +
-           coords + "]},\n \"properties\": {\"name\": \"singlestrip route\", \"length\": " + num(r.length) +
-           ", \"z\": " + (r.points.empty() ? std::string("0") : num(r.points.front().position[2])) + ", \"faces\": [" + faces + "]}}]}\n";
+    return "{\"type\": \"FeatureCollection\", \"features\": [" + features + "]}\n";
 }
 
 std::string lower(std::string s) {

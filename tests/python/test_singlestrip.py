@@ -193,7 +193,7 @@ def test_malformed_arrays(vertices, faces, pattern):
         ss.strip(vertices, faces)
 
 
-STRUCTURAL = ["non_manifold_edge.off", "tetra_one_flipped.off", "two_components.off", "repeated_vertex.off",
+STRUCTURAL = ["non_manifold_edge.off", "tetra_one_flipped.off", "repeated_vertex.off",
               "duplicate_face.off", "moebius.off", "non_manifold_vertex.off"]
 
 
@@ -316,3 +316,13 @@ def test_route_through_centroids_and_midpoints():
 def test_every_function_has_a_docstring():
     for name in ("strip", "verify", "decode_strip", "read"):
         assert len(getattr(ss, name).__doc__ or "") > 40, name
+
+
+@pytest.mark.parametrize("name", STRUCTURAL + ["two_components.off"])
+def test_repair_strips_every_broken_file_and_verifies(name):
+    v, f = read_off(os.path.join(DATA, name))
+    r = ss.strip(v, f, repair=True, join="restart")
+    assert "repair" in r["report"]
+    check = ss.verify(v, f, r, repair=True)
+    assert check["ok"], check["text"]
+    assert check["strips"] == r["report"]["strips"]
