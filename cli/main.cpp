@@ -604,6 +604,7 @@ int run_batch_mode(const StripArgs& sa) {
     b.weld = sa.fix.weld;
     b.repair = sa.fix.repair;
     b.join = sa.join;
+    b.restart_index = sa.restart_index;
     b.seed_face = sa.seed_face;
     b.threads = sa.jobs;
     return ss::run_batch(sa.inputs, b, std::cout);

@@ -48,6 +48,7 @@ PipelineOptions pipeline_options(const BatchOptions& o, const std::string& input
     p.weld = o.weld;
     p.repair = o.repair;
     p.join = o.join;
+    p.restart_index = o.restart_index;
     p.cycles = o.cycles;
     p.name = input;
     return p;
