@@ -418,10 +418,6 @@ int run_verify(const VerifyArgs& a) {
             a.output +
             ": verify reads .ply, .obj, .off and glTF results (STL stores float32 corners and no shared vertices to check); "
             "write a .ply with the same options to verify");
-    if (ss::is_gltf_path(a.output) && ss::is_gltf_path(a.input))
-        throw ss::RequestError(a.output +
-                               ": a glTF scene stripped primitive by primitive is not verified; write a .ply from the same "
-                               "input (all its triangle primitives as one mesh) to verify");
     ss::VerifyFileOptions o;
     o.indices_path = a.indices;
     o.constraints_path = a.constraints;

@@ -196,33 +196,13 @@ int write_indices(tinygltf::Model& model, const std::vector<uint32_t>& idx) {
     return static_cast<int>(model.accessors.size() - 1);
 }
 
-/// Triangles re-pointed to the first vertex equal to theirs in every attribute (byte-wise).
-uint64_t weld_equal_vertices(const std::map<std::string, AccessorData>& attrs, std::size_t n, std::vector<Triangle>& tris) {
-    std::map<std::string, uint32_t> first;
-    std::vector<uint32_t> rep(n);
-    uint64_t merged = 0;
-    for (uint32_t v = 0; v < n; ++v) {
-        std::string key;
-        for (const auto& [name, d] : attrs) key.append(reinterpret_cast<const char*>(d.raw.data() + v * d.elem_size), d.elem_size);
-        const auto [it, fresh] = first.emplace(std::move(key), v);
-        rep[v] = it->second;
-        merged += fresh ? 0 : 1;
-    }
-    for (Triangle& t : tris)
-        for (uint32_t& v : t) v = rep[v];
-    return merged;
-}
-
 GltfPrimitiveResult strip_primitive(tinygltf::Model& model, tinygltf::Primitive& prim, const PipelineOptions& base,
                                     const std::string& name) {
     GltfPrimitiveResult res;
     std::map<std::string, AccessorData> attrs;
     for (const auto& [attr, index] : prim.attributes) attrs.emplace(attr, gltf_detail::read_accessor(model, index, name));
-    const std::vector<Point3> pts = gltf_detail::primitive_positions(model, prim, name);
-    TriangleSoup soup;
-    soup.points = pts;
-    soup.triangles = gltf_detail::primitive_triangles(model, prim, pts.size(), name);
-    res.welded = weld_equal_vertices(attrs, pts.size(), soup.triangles);
+    TriangleSoup soup = gltf_detail::primitive_soup(model, prim, name, &res.welded);
+    const std::vector<Point3> pts = soup.points;
     const std::vector<Triangle> tris = soup.triangles;
     PipelineOptions o = base;
     o.name = name;

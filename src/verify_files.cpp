@@ -26,7 +26,7 @@ std::vector<std::string> replay_input_steps(VerifyInput& vi, const InputSteps& s
     input.triangles = std::move(vi.in_faces);
     std::vector<uint32_t> face_of_input;
     if (steps.repair) {
-        RepairedSoup rs = repair_soup(input);
+        RepairedSoup rs = repair_soup(input, RepairOptions{steps.repair_weld});
         face_of_input.assign(input.triangles.size(), kNo);
         for (uint32_t t = 0; t < rs.face_origin.size(); ++t) face_of_input[rs.face_origin[t]] = t;
         notes.push_back("checked against the input as repaired by the library's repair_soup (this part depends on the library): " +
@@ -51,6 +51,8 @@ std::vector<std::string> replay_input_steps(VerifyInput& vi, const InputSteps& s
 }
 
 VerifyReport verify_files(const std::string& in_path, const std::string& out_path, const VerifyFileOptions& options) {
+    if (is_gltf_path(in_path) && is_gltf_path(out_path) && options.input_format.empty())
+        return verify_gltf_scene(in_path, out_path, options.steps);
     ReadOptions read;
     read.format = options.input_format;
     return verify_files(is_gltf_path(in_path) && read.format.empty() ? read_gltf_soup(in_path) : read_mesh_file(in_path, read), out_path,

@@ -319,6 +319,9 @@ TEST(Cli, GltfSceneInAndOut) {
     ASSERT_EQ(j["primitives"].size(), 4u);
     EXPECT_EQ(j["primitives"][0]["stripped"], true);
     EXPECT_EQ(cli("strip " + q(scene) + " -o " + q(s / "o2.glb") + " --indices " + q(s / "i.txt")).code, 4);
+    CliRun sv = cli("verify " + q(scene) + " " + q(s / "o.glb"));
+    EXPECT_EQ(sv.code, 0) << sv.out;
+    EXPECT_NE(sv.out.find("8 strips"), std::string::npos) << sv.out;
     // Any other output: all triangle primitives as one mesh, verified like any input.
     EXPECT_EQ(cli("info " + q(data("scene.glb"))).code, 0);
     CliRun p = cli("strip " + q(data("scene.glb")) + " -o " + q(s / "o.ply") + " --indices " + q(s / "o.txt"));

@@ -36,6 +36,7 @@
 #include "singlestrip/pipeline.hpp"
 #include "singlestrip/strip.hpp"
 #include "singlestrip/validate.hpp"
+#include "singlestrip/verify.hpp"
 
 using namespace singlestrip;
 namespace fs = std::filesystem;
@@ -432,6 +433,10 @@ TEST(GltfInput, SceneWithSeveralTexturedPrimitivesStripsKeepsTheRestAndValidates
                     }
                 }
             }
+            // The independent verifier, primitive by primitive, with float32 tolerances.
+            const VerifyReport rep = verify_files(in, out);
+            EXPECT_TRUE(rep.ok()) << rep.to_string();
+            EXPECT_EQ(rep.strips, 8u);  // tube 1, cube 6, grid 1
             if (dir.empty()) continue;
             const nlohmann::json v = validate_gltf(dir, out);
             ASSERT_TRUE(v.is_object() && v.contains("issues")) << v.dump();

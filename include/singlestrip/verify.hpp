@@ -106,6 +106,7 @@ VerifyReport verify(const VerifyInput& input);
 /// The input steps a strip run was asked for (`strip --weld / --repair / --orient`).
 struct InputSteps {
     bool weld = false, repair = false, orient = false;
+    bool repair_weld = true;  ///< RepairOptions::weld (off for glTF primitives)
 };
 
 /// Makes vi.in_points / vi.in_faces the input the strip was built from: the SAME steps replayed
@@ -156,6 +157,14 @@ struct OutputMesh {
 /// \throw InputError naming the file and the problem: missing/unreadable, unknown extension,
 ///        malformed header, truncated data, a face that is not a triangle, an index out of range.
 OutputMesh read_output_mesh(const std::string& path);
+
+/// glTF in and glTF out (`strip scene.glb -o out.glb`): every primitive of OUT in mode 5 is
+/// checked by verify() against the same primitive of IN as the strip saw it (positions; triangles
+/// merged over vertices equal in every attribute; with steps.repair the library's repair without
+/// welding — library code, said in a note), with VerifyInput::float32 and parents inferred.
+/// Failures are prefixed "mesh M primitive P: "; counts are summed. Primitives left as they were
+/// are noted. \throw InputError naming a file that cannot be read or whose meshes differ in shape.
+VerifyReport verify_gltf_scene(const std::string& in_path, const std::string& out_path, const InputSteps& steps = {});
 
 /// Reads whitespace-separated non-negative integers (an --indices file).
 /// \throw InputError naming the file and the offending token.

@@ -52,4 +52,10 @@ std::vector<Triangle> primitive_triangles(const tinygltf::Model& model, const ti
 /// applied). \throw InputError unless VEC3.
 std::vector<Point3> primitive_positions(const tinygltf::Model& model, const tinygltf::Primitive& prim, const std::string& path);
 
+/// The primitive as the strip sees it: its positions, and its triangles re-pointed to the first
+/// vertex equal to theirs in EVERY attribute (byte-wise; `welded` gets how many vertices were
+/// merged), so attribute seams stay apart. \throw InputError as the readers above.
+TriangleSoup primitive_soup(const tinygltf::Model& model, const tinygltf::Primitive& prim, const std::string& path,
+                            uint64_t* welded = nullptr);
+
 }  // namespace singlestrip::gltf_detail

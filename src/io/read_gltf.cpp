@@ -3,6 +3,7 @@
 #include <cctype>
 #include <cstring>
 #include <fstream>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -175,6 +176,28 @@ std::vector<Triangle> primitive_triangles(const tinygltf::Model& model, const ti
         tris.push_back({idx[i], idx[i + 1], idx[i + 2]});
     }
     return tris;
+}
+
+TriangleSoup primitive_soup(const tinygltf::Model& model, const tinygltf::Primitive& prim, const std::string& path, uint64_t* welded) {
+    TriangleSoup soup;
+    soup.points = primitive_positions(model, prim, path);
+    soup.triangles = primitive_triangles(model, prim, soup.points.size(), path);
+    std::vector<AccessorData> attrs;
+    for (const auto& [name, index] : prim.attributes) attrs.push_back(read_accessor(model, index, path));
+    std::map<std::string, uint32_t> first;
+    std::vector<uint32_t> rep(soup.points.size());
+    uint64_t merged = 0;
+    for (uint32_t v = 0; v < rep.size(); ++v) {
+        std::string key;
+        for (const AccessorData& d : attrs) key.append(reinterpret_cast<const char*>(d.raw.data() + v * d.elem_size), d.elem_size);
+        const auto [it, fresh] = first.emplace(std::move(key), v);
+        rep[v] = it->second;
+        merged += fresh ? 0 : 1;
+    }
+    for (Triangle& t : soup.triangles)
+        for (uint32_t& v : t) v = rep[v];
+    if (welded) *welded = merged;
+    return soup;
 }
 
 }  // namespace gltf_detail
