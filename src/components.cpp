@@ -186,9 +186,10 @@ void append_arrays(PipelineResult& r, const Part& p, const StripResult& res) {
 }  // namespace
 
 void strip_components(PipelineResult& r, const std::vector<uint32_t>& comp, uint32_t count, PipelineStage* stage) {
-    if (stage) *stage = PipelineStage::Mesh;
+    if (stage) *stage = PipelineStage::Strip;  // request checks belong to the strip stage, as in build_strip()
     const StripOptions& o = r.options.strip;
     check_requests(r.input, o);
+    if (stage) *stage = PipelineStage::Mesh;
     const Split sp = split_parts(r.input, comp, count);
     r.arrays.points = r.input.points;
     r.strip.stats.engine = o.engine;
