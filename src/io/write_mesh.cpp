@@ -98,11 +98,13 @@ void write_strip_mesh(const std::string& path, const std::vector<Point3>& points
                       const std::vector<uint32_t>& parent) {
     const OutputFormat fmt = output_format_for(path);
     if (parent.size() != faces.size())
-        throw InternalError("write_strip_mesh: " + std::to_string(faces.size()) + " faces but " + std::to_string(parent.size()) + " parents");
+        throw InternalError("write_strip_mesh: " + std::to_string(faces.size()) + " faces but " + std::to_string(parent.size()) +
+                            " parents");
     for (std::size_t f = 0; f < faces.size(); ++f)
         for (uint32_t v : faces[f])
-            if (v >= points.size()) throw InternalError("write_strip_mesh: face " + std::to_string(f) + " references vertex " + std::to_string(v) +
-                                                        " of " + std::to_string(points.size()));
+            if (v >= points.size())
+                throw InternalError("write_strip_mesh: face " + std::to_string(f) + " references vertex " + std::to_string(v) + " of " +
+                                    std::to_string(points.size()));
     write_atomically(path, [&](std::ofstream& out) {
         switch (fmt) {
             case OutputFormat::Ply: {
