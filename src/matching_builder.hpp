@@ -75,9 +75,10 @@ private:
     void repair_short(std::vector<uint32_t>& short_faces);
     bool split_beside(uint32_t u);
     bool repair_in_balls(std::vector<uint32_t>& short_faces, size_t ball);
-    bool repair_ball(const std::vector<uint32_t>& short_faces, size_t ball);
+    bool repair_ball(const std::vector<uint32_t>& short_faces, size_t ball, std::vector<uint8_t>* whole = nullptr);
     static constexpr size_t kBallOneByOne = 8192;
     std::vector<uint32_t> ball_local_;
+    std::vector<uint8_t> ball_whole_;  ///< faces of a ball that was its whole component
     void label_structures();
     void merge_all();
     void reduce_loops();

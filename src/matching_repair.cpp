@@ -71,8 +71,12 @@ bool MatchingBuilder::repair_in_balls(std::vector<uint32_t>& short_faces, size_t
     if (ball > kBallOneByOne) {  // large balls overlap: one search over their union
         truncated = repair_ball(short_faces, ball);
     } else {
+        // A ball that was not cut off is the whole component: Edmonds left its matching maximum,
+        // so the component's other short faces need no ball of their own.
+        std::vector<uint8_t>& whole = ball_whole_;
+        whole.assign(mesh_.num_faces(), 0);
         for (uint32_t s : std::vector<uint32_t>(short_faces))
-            if (quota_[s] > 0) truncated |= repair_ball({s}, ball);
+            if (quota_[s] > 0 && !whole[s]) truncated |= repair_ball({s}, ball, &whole);
     }
     std::erase_if(short_faces, [&](uint32_t f) { return quota_[f] == 0; });
     return truncated;
@@ -80,7 +84,7 @@ bool MatchingBuilder::repair_in_balls(std::vector<uint32_t>& short_faces, size_t
 
 // Edmonds on the union of the balls around `short_faces` (repair_in_balls()); true if a ball was
 // cut off by its size.
-bool MatchingBuilder::repair_ball(const std::vector<uint32_t>& short_faces, size_t ball) {
+bool MatchingBuilder::repair_ball(const std::vector<uint32_t>& short_faces, size_t ball, std::vector<uint8_t>* whole) {
     std::vector<uint32_t>& local = ball_local_;  // kNone outside the ball, on entry and exit
     std::vector<uint32_t> faces, queue;
     bool truncated = false;
@@ -97,6 +101,8 @@ bool MatchingBuilder::repair_ball(const std::vector<uint32_t>& short_faces, size
         faces.insert(faces.end(), queue.begin(), queue.end());
         truncated |= queue.size() >= ball;
     }
+    if (whole && !truncated)
+        for (uint32_t f : faces) (*whole)[f] = 1;
     // Keep faces that take matched edges and whose partners are all inside too. A pinned face
     // takes two: it gets two copies, each linked to all its neighbours (b-matching to matching).
     auto want = [&](uint32_t f) { return std::max(0, static_cast<int>(degree(f)) - (2 - vlink_[f])); };
