@@ -96,6 +96,10 @@ private:
     bool single_strip_ready();
     std::vector<uint32_t> walk() const;
     StripResult finish(std::vector<uint32_t> order);
+    StripResult finish_or_grow(std::vector<uint32_t> order);
+    StripResult grow(Mesh mesh, uint32_t splits) const;
+    void keep_better(StripResult& r, StripResult alt) const;
+    StripResult as_fallback(StripResult r) const;
     StripResult fallback();
     Mesh input_mesh() const;
 };
