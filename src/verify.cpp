@@ -615,17 +615,11 @@ size_t z2_rank(std::vector<Bits>& rows, size_t ncols) {
     return rank;
 }
 
-void check_cycles(const VerifyInput& in, const Adjacency& out, long long expected, Failures& fails, VerifyReport& report) {
-    const auto& cycles = *in.cycles;
-    const size_t m = cycles.size();
+/// Undirected edge ids of the output's half-edges (both halves of an interior edge share one).
+std::vector<uint32_t> number_edges(const Adjacency& out, uint32_t& num_edges) {
     const size_t F = out.faces.size();
-    report.cycles_checked = m;
-    if (static_cast<long long>(m) != expected)
-        fails.add("cycles",
-                  "found " + std::to_string(m) + " cycles, expected 2g+h-1 = " + std::to_string(expected) + " (2g for a closed surface)");
-    // Edge ids (undirected) for interior edges.
     std::vector<uint32_t> edge_id(3 * F, kNo);
-    uint32_t num_edges = 0;
+    num_edges = 0;
     for (uint32_t h = 0; h < 3 * F; ++h) {
         if (!out.face_ok[h / 3]) continue;
         const uint32_t t = out.twin[h];
@@ -634,8 +628,15 @@ void check_cycles(const VerifyInput& in, const Adjacency& out, long long expecte
         else
             edge_id[h] = edge_id[t];
     }
-    // Crossings: (edge, cycle) pairs.
-    std::vector<std::pair<uint32_t, uint32_t>> cross;
+    return edge_id;
+}
+
+/// Each cycle's crossings (edge, cycle) into `cross`; false (with failures) if a cycle is not a
+/// closed chain of edge-adjacent output faces.
+bool collect_crossings(const std::vector<std::vector<uint32_t>>& cycles, const Adjacency& out, const std::vector<uint32_t>& edge_id,
+                       Failures& fails, std::vector<std::pair<uint32_t, uint32_t>>& cross) {
+    const size_t m = cycles.size();
+    const size_t F = out.faces.size();
     bool closed_ok = true;
     for (uint32_t c = 0; c < m; ++c) {
         const auto& cyc = cycles[c];
@@ -670,41 +671,56 @@ void check_cycles(const VerifyInput& in, const Adjacency& out, long long expecte
         }
         closed_ok = closed_ok && this_ok;
     }
-    if (!closed_ok) {
-        report.notes.push_back("cycles: independence not checked (a cycle is not a closed chain)");
-        return;
-    }
-    if (m == 0) return;
-    if (static_cast<long long>(m) > expected) {
-        report.notes.push_back("cycles: independence not checked (more cycles than the dimension of H1)");
-        return;
-    }
-    const size_t W = (m + 63) / 64;
-    // Sparse crossing parity per edge: CSR over edges of cycles crossing an odd number of times.
-    std::sort(cross.begin(), cross.end());
-    std::vector<uint32_t> edge_slot(num_edges, kNo);  // edge -> row of edge_bits, kNo = crossed by none
+    return closed_ok;
+}
+
+/// Crossing parity per edge (a bit per cycle), stored only for edges some cycle crosses an odd
+/// number of times.
+struct EdgeParity {
+    size_t W = 0;
+    std::vector<uint32_t> edge_slot;  // edge -> row of edge_bits, kNo = crossed by none
     std::vector<Bits> edge_bits;
-    for (size_t i = 0; i < cross.size();) {
-        size_t j = i;
-        while (j < cross.size() && cross[j] == cross[i]) ++j;
-        if ((j - i) % 2 == 1) {
-            uint32_t& slot = edge_slot[cross[i].first];
-            if (slot == kNo) {
-                slot = static_cast<uint32_t>(edge_bits.size());
-                edge_bits.emplace_back(W, 0);
+    EdgeParity(std::vector<std::pair<uint32_t, uint32_t>> cross, uint32_t num_edges, size_t m)
+        : W((m + 63) / 64), edge_slot(num_edges, kNo) {
+        std::sort(cross.begin(), cross.end());
+        for (size_t i = 0; i < cross.size();) {
+            size_t j = i;
+            while (j < cross.size() && cross[j] == cross[i]) ++j;
+            if ((j - i) % 2 == 1) {
+                uint32_t& slot = edge_slot[cross[i].first];
+                if (slot == kNo) {
+                    slot = static_cast<uint32_t>(edge_bits.size());
+                    edge_bits.emplace_back(W, 0);
+                }
+                edge_bits[slot][cross[i].second / 64] ^= uint64_t{1} << (cross[i].second % 64);
             }
-            edge_bits[slot][cross[i].second / 64] ^= uint64_t{1} << (cross[i].second % 64);
+            i = j;
         }
-        i = j;
     }
-    auto xor_edge = [&](Bits& into, uint32_t e) {
+    void xor_edge(Bits& into, uint32_t e) const {
         if (edge_slot[e] != kNo)
             for (size_t k = 0; k < W; ++k) into[k] ^= edge_bits[edge_slot[e]][k];
-    };
-    // Tree-cotree on the output, boundary vertices identified to one super-vertex S.
+    }
+};
+
+/// Tree-cotree on the output, boundary vertices identified to one super-vertex S = num_points.
+struct OutputTreeCotree {
+    uint32_t root = kNo;
+    std::vector<uint32_t> order;             // quotient vertices in BFS order, root first
+    std::vector<uint32_t> tree_parent_edge;  // per quotient vertex: half-edge to its parent
+    std::vector<uint32_t> leftovers;         // one half-edge per edge in neither tree
+};
+
+uint32_t quotient(const Adjacency& out, uint32_t v) {
+    return out.on_boundary[v] ? static_cast<uint32_t>(out.num_points) : v;
+}
+
+OutputTreeCotree output_tree_cotree(const Adjacency& out, const std::vector<uint32_t>& edge_id, uint32_t num_edges, bool has_boundary) {
+    const size_t F = out.faces.size();
+    OutputTreeCotree tc;
     const uint32_t NV = static_cast<uint32_t>(out.num_points);
     const uint32_t S = NV;
-    auto q = [&](uint32_t v) { return out.on_boundary[v] ? S : v; };
+    auto q = [&](uint32_t v) { return quotient(out, v); };
     // Interior edges as adjacency lists (CSR) of the quotient graph.
     std::vector<uint32_t> off(NV + 2, 0);
     std::vector<uint32_t> interior;  // one representative half-edge per interior edge
@@ -728,15 +744,17 @@ void check_cycles(const VerifyInput& in, const Adjacency& out, long long expecte
         }
     }
     std::vector<bool> in_tree(num_edges, false);
-    std::vector<uint32_t> tree_parent_edge(NV + 1, kNo), order;
+    std::vector<uint32_t>& tree_parent_edge = tc.tree_parent_edge;
+    std::vector<uint32_t>& order = tc.order;
+    tree_parent_edge.assign(NV + 1, kNo);
     std::vector<bool> seen(NV + 1, false);
-    uint32_t root = kNo;
-    if (report.boundary_loops > 0)
+    uint32_t& root = tc.root;
+    if (has_boundary)
         root = S;
     else
         for (uint32_t f = 0; f < F && root == kNo; ++f)
             if (out.face_ok[f]) root = out.faces[f][0];
-    if (root == kNo) return;
+    if (root == kNo) return tc;
     seen[root] = true;
     order.push_back(root);
     for (size_t i = 0; i < order.size(); ++i) {
@@ -770,14 +788,23 @@ void check_cycles(const VerifyInput& in, const Adjacency& out, long long expecte
             fq.push_back(t / 3);
         }
     }
-    std::vector<uint32_t> leftovers;
     for (uint32_t h : interior)
-        if (!in_tree[edge_id[h]] && !in_cotree[edge_id[h]]) leftovers.push_back(h);
-    if (static_cast<long long>(leftovers.size()) != expected) {
-        fails.add("cycles", "tree-cotree on the output gives " + std::to_string(leftovers.size()) + " generators, expected " +
-                                std::to_string(expected) + " (output is not a connected surface of the input's topology)");
-        return;
-    }
+        if (!in_tree[edge_id[h]] && !in_cotree[edge_id[h]]) tc.leftovers.push_back(h);
+    return tc;
+}
+
+/// Class rows of the tree-cotree generators: bit c of row j says whether cycle c crosses the
+/// relative cycle of leftover edge j (the edge plus the tree paths to its ends) an odd number of
+/// times.
+std::vector<Bits> class_rows(const Adjacency& out, const OutputTreeCotree& tc, const std::vector<uint32_t>& edge_id,
+                             const EdgeParity& parity) {
+    const size_t W = parity.W;
+    const uint32_t NV = static_cast<uint32_t>(out.num_points);
+    auto q = [&](uint32_t v) { return quotient(out, v); };
+    const uint32_t root = tc.root;
+    const std::vector<uint32_t>& order = tc.order;
+    const std::vector<uint32_t>& tree_parent_edge = tc.tree_parent_edge;
+    const std::vector<uint32_t>& leftovers = tc.leftovers;
     // P(x): parity vector of tree path root->x.
     std::vector<Bits> P(NV + 1);
     P[root].assign(W, 0);
@@ -786,7 +813,7 @@ void check_cycles(const VerifyInput& in, const Adjacency& out, long long expecte
         const uint32_t a = q(out.from(h)), b = q(out.to(h));
         const uint32_t x = a == y ? b : a;
         P[y] = P[x];
-        xor_edge(P[y], edge_id[h]);
+        parity.xor_edge(P[y], edge_id[h]);
     }
     std::vector<Bits> rows;
     rows.reserve(leftovers.size());
@@ -795,9 +822,42 @@ void check_cycles(const VerifyInput& in, const Adjacency& out, long long expecte
         Bits r(W, 0);
         if (!P[a].empty() && !P[b].empty())
             for (size_t k = 0; k < W; ++k) r[k] = P[a][k] ^ P[b][k];
-        xor_edge(r, edge_id[h]);
+        parity.xor_edge(r, edge_id[h]);
         rows.push_back(std::move(r));
     }
+    return rows;
+}
+
+void check_cycles(const VerifyInput& in, const Adjacency& out, long long expected, Failures& fails, VerifyReport& report) {
+    const auto& cycles = *in.cycles;
+    const size_t m = cycles.size();
+    report.cycles_checked = m;
+    if (static_cast<long long>(m) != expected)
+        fails.add("cycles",
+                  "found " + std::to_string(m) + " cycles, expected 2g+h-1 = " + std::to_string(expected) + " (2g for a closed surface)");
+    uint32_t num_edges = 0;
+    const std::vector<uint32_t> edge_id = number_edges(out, num_edges);
+    std::vector<std::pair<uint32_t, uint32_t>> cross;
+    if (!collect_crossings(cycles, out, edge_id, fails, cross)) {
+        report.notes.push_back("cycles: independence not checked (a cycle is not a closed chain)");
+        return;
+    }
+    if (m == 0) return;
+    if (static_cast<long long>(m) > expected) {
+        report.notes.push_back("cycles: independence not checked (more cycles than the dimension of H1)");
+        return;
+    }
+    const EdgeParity parity(std::move(cross), num_edges, m);
+    const OutputTreeCotree tc = output_tree_cotree(out, edge_id, num_edges, report.boundary_loops > 0);
+    if (tc.root == kNo) return;
+    const std::vector<uint32_t>& leftovers = tc.leftovers;
+    if (static_cast<long long>(leftovers.size()) != expected) {
+        fails.add("cycles", "tree-cotree on the output gives " + std::to_string(leftovers.size()) + " generators, expected " +
+                                std::to_string(expected) + " (output is not a connected surface of the input's topology)");
+        return;
+    }
+    std::vector<Bits> rows = class_rows(out, tc, edge_id, parity);
+    const size_t W = parity.W;
     // Null-homologous cycles: zero column.
     Bits any(W, 0);
     for (const Bits& r : rows)
@@ -834,26 +894,26 @@ std::vector<Triangle> verify_decode_strip(const std::vector<uint32_t>& indices, 
     return gl_decode(indices, restart_index);
 }
 
-VerifyReport verify(const VerifyInput& in) {
-    const ToleranceScope tolerance(in.float32);
-    VerifyReport report;
-    Failures fails(report);
-    const size_t n = in.in_points.size();
-    const size_t F = in.out_faces.size();
-    report.input_faces = in.in_faces.size();
-    report.output_faces = F;
+namespace {
 
-    // ---- input sanity (the reference everything is compared with)
-    const Adjacency inp = build_adjacency(n, in.in_faces, "input");
-    if (!inp.manifold || in.in_faces.empty()) {
-        for (const auto& p : inp.problems) fails.add("input", p);
-        if (in.in_faces.empty()) fails.add("input", "no faces");
-        report.notes.push_back("input is not a valid manifold mesh; output not checked");
-        fails.finish();
-        return report;
+/// What the checks of the output read: the request, both adjacencies, each output face's
+/// parent (kNo when unknown), and where failures and findings go.
+struct Checked {
+    const VerifyInput& in;
+    const Adjacency& inp;
+    const Adjacency& out;
+    std::vector<uint32_t> parent;
+    Failures& fails;
+    VerifyReport& report;
+    [[nodiscard]] size_t num_faces() const { return in.out_faces.size(); }
+    [[nodiscard]] bool all_faces_ok() const {
+        return std::all_of(out.face_ok.begin(), out.face_ok.end(), [](bool b) { return b; });
     }
+};
 
-    // ---- original vertices unchanged
+// Input vertices unchanged (as a float32 file holds them), every coordinate finite.
+void check_vertices(const VerifyInput& in, Failures& fails, VerifyReport& report) {
+    const size_t n = in.in_points.size();
     if (in.out_points.size() < n) {
         fails.add("vertices",
                   "output has " + std::to_string(in.out_points.size()) + " vertices, fewer than the input's " + std::to_string(n));
@@ -874,30 +934,28 @@ VerifyReport verify(const VerifyInput& in) {
                 fails.add("vertices", "vertex " + std::to_string(v) + " has a non-finite coordinate");
                 break;
             }
-    if (F == 0) {
-        fails.add("faces", "output has no faces");
-        fails.finish();
-        return report;
-    }
+}
 
-    // ---- output topology
-    const Adjacency out = build_adjacency(in.out_points.size(), in.out_faces, "output");
+// The output's Euler characteristic and boundary loops are the input's.
+void check_topology(const Adjacency& inp, const Adjacency& out, Failures& fails, VerifyReport& report) {
     for (const auto& p : out.problems) fails.add("manifold", p);
     report.output_vertices = static_cast<size_t>(out.referenced_vertices);
     report.euler_characteristic = out.euler;
     report.boundary_loops = out.boundary_loops;
-    bool all_faces_ok = std::all_of(out.face_ok.begin(), out.face_ok.end(), [](bool b) { return b; });
     if (out.euler != inp.euler)
         fails.add("topology",
                   "Euler characteristic " + std::to_string(out.euler) + " differs from the input's " + std::to_string(inp.euler));
     if (out.boundary_loops != inp.boundary_loops)
         fails.add("topology",
                   std::to_string(out.boundary_loops) + " boundary loop(s), the input has " + std::to_string(inp.boundary_loops));
+}
 
-    // ---- parents
-    std::vector<uint32_t> parent;
+// Each output face's input parent: the given array, checked, or inferred from the geometry.
+std::vector<uint32_t> resolve_parents(const VerifyInput& in, const Adjacency& out, Failures& fails) {
+    const size_t n = in.in_points.size();
+    const size_t F = in.out_faces.size();
     if (!in.out_parent.empty()) {
-        parent = in.out_parent;
+        std::vector<uint32_t> parent = in.out_parent;
         if (parent.size() != F) {
             fails.add("parent", "parent array has " + std::to_string(parent.size()) + " entries for " + std::to_string(F) + " faces");
             parent.resize(F, kNo);
@@ -908,12 +966,22 @@ VerifyReport verify(const VerifyInput& in) {
                                         std::to_string(in.in_faces.size()) + " input faces)");
                 parent[f] = kNo;
             }
-    } else {
-        const InputStars stars = build_stars(n, in.in_faces);
-        parent = infer_parents(in, out, stars, fails);
+        return parent;
     }
+    const InputStars stars = build_stars(n, in.in_faces);
+    return infer_parents(in, out, stars, fails);
+}
 
-    // ---- geometry per face, areas per parent
+// Every face lies inside its parent, in its plane, with its orientation; children's areas add
+// up to their parent's.
+void check_geometry(Checked& chk) {
+    const VerifyInput& in = chk.in;
+    const Adjacency& out = chk.out;
+    const std::vector<uint32_t>& parent = chk.parent;
+    Failures& fails = chk.fails;
+    VerifyReport& report = chk.report;
+    const size_t F = chk.num_faces();
+    const bool all_faces_ok = chk.all_faces_ok();
     std::vector<double> child_area(in.in_faces.size(), 0.0);
     size_t degenerate_parents_checked = 0;
     std::vector<uint32_t> child_count(in.in_faces.size(), 0);
@@ -984,8 +1052,18 @@ VerifyReport verify(const VerifyInput& in) {
     } else {
         report.notes.push_back("area sums not checked (some faces invalid or without parent)");
     }
+}
 
-    // ---- T-junctions: output boundary edges must tile the input boundary edges exactly
+// T-junctions: output boundary edges must tile the input boundary edges exactly. Runs even when
+// the output is not vertex-manifold: a T-junction leaves a crack that makes its corner vertices
+// non-manifold, and this check names the cause.
+void check_boundary_tiling(const Checked& chk) {
+    const VerifyInput& in = chk.in;
+    const Adjacency& inp = chk.inp;
+    const Adjacency& out = chk.out;
+    const std::vector<uint32_t>& parent = chk.parent;
+    Failures& fails = chk.fails;
+    const size_t F = chk.num_faces();
     // Runs even when the output is not vertex-manifold: a T-junction leaves a crack that makes
     // its corner vertices non-manifold, and this check names the cause.
     {
@@ -1072,10 +1150,18 @@ VerifyReport verify(const VerifyInput& in) {
                 fails.add("conformity", "input boundary edge (" + std::to_string(inp.from(ih)) + "," + std::to_string(inp.to(ih)) +
                                             ") is not covered by output boundary edges");
     }
+}
 
-    // ---- strips: one per edge-connected component of the output, each a contiguous run of faces
+// One strip per edge-connected component of the output, each a contiguous run of faces in which
+// consecutive faces share an edge; a new strip starts exactly where the component changes.
+// Returns the last face of each strip; `num_components` receives the output's components.
+std::vector<uint32_t> check_strips(const Checked& chk, size_t& num_components) {
+    const VerifyInput& in = chk.in;
+    const Adjacency& out = chk.out;
+    Failures& fails = chk.fails;
+    VerifyReport& report = chk.report;
+    const size_t F = chk.num_faces();
     // in which consecutive faces share an edge; a new strip starts exactly where the component changes.
-    size_t num_components = 0;
     const std::vector<uint32_t> comp = out_components(out, num_components);
     std::vector<uint32_t> strip_end;  // last face of each strip
     {
@@ -1102,8 +1188,14 @@ VerifyReport verify(const VerifyInput& in) {
         report.strips = strip_end.size();
         report.genus = (2 * static_cast<long long>(num_components) - out.euler - static_cast<long long>(out.boundary_loops)) / 2;
     }
+    return strip_end;
+}
 
-    // ---- index sequence
+// The index sequence decodes to exactly the output's faces, in order, with their winding.
+void check_indices(const Checked& chk) {
+    const VerifyInput& in = chk.in;
+    Failures& fails = chk.fails;
+    const size_t F = chk.num_faces();
     if (in.indices) {
         const auto& s = *in.indices;
         bool range_ok = true;
@@ -1127,8 +1219,17 @@ VerifyReport verify(const VerifyInput& in) {
                 }
         }
     }
+}
 
-    // ---- constraints
+// Constraint edges are input edges, never split, and never crossed between consecutive faces.
+void check_constraints(const Checked& chk) {
+    const VerifyInput& in = chk.in;
+    const Adjacency& inp = chk.inp;
+    const Adjacency& out = chk.out;
+    const std::vector<uint32_t>& parent = chk.parent;
+    Failures& fails = chk.fails;
+    const size_t n = in.in_points.size();
+    const size_t F = chk.num_faces();
     if (!in.constraints.empty()) {
         std::unordered_set<uint64_t> cset;
         for (size_t i = 0; i < in.constraints.size(); ++i) {
@@ -1187,8 +1288,13 @@ VerifyReport verify(const VerifyInput& in) {
             }
         }
     }
+}
 
-    // ---- source / target
+// The first face holds the source, the last face of the first strip the target.
+void check_source_target(const Checked& chk, uint32_t first_strip_end) {
+    const VerifyInput& in = chk.in;
+    Failures& fails = chk.fails;
+    const size_t n = in.in_points.size();
     auto has_vertex = [&](uint32_t f, uint32_t v) {
         const Triangle& t = in.out_faces[f];
         return t[0] == v || t[1] == v || t[2] == v;
@@ -1201,15 +1307,24 @@ VerifyReport verify(const VerifyInput& in) {
                       "first face 0 " + tri_str(in.out_faces[0]) + " does not contain source vertex " + std::to_string(*in.source));
     }
     if (in.target) {  // the end of the first strip (the whole output when there is one)
-        const uint32_t last = strip_end.front();
+        const uint32_t last = first_strip_end;
         if (*in.target >= n)
             fails.add("target", "target vertex " + std::to_string(*in.target) + " is not an input vertex");
         else if (!has_vertex(last, *in.target))
             fails.add("target", "last face " + std::to_string(last) + " " + tri_str(in.out_faces[last]) +
                                     " of the first strip does not contain target vertex " + std::to_string(*in.target));
     }
+}
 
-    // ---- cycles
+// The cycles: as many as the surface's rank and a basis (check_cycles) when the output is one
+// manifold component.
+void check_cycles_request(const Checked& chk, size_t num_components) {
+    const VerifyInput& in = chk.in;
+    const Adjacency& inp = chk.inp;
+    const Adjacency& out = chk.out;
+    Failures& fails = chk.fails;
+    VerifyReport& report = chk.report;
+    const bool all_faces_ok = chk.all_faces_ok();
     if (in.cycles) {
         const long long h = static_cast<long long>(inp.boundary_loops);
         const long long expected = h > 0 ? 1 - inp.euler : 2 - inp.euler;
@@ -1226,7 +1341,43 @@ VerifyReport verify(const VerifyInput& in) {
             check_cycles(in, out, expected, fails, report);
         }
     }
+}
 
+}  // namespace
+
+VerifyReport verify(const VerifyInput& in) {
+    const ToleranceScope tolerance(in.float32);
+    VerifyReport report;
+    Failures fails(report);
+    report.input_faces = in.in_faces.size();
+    report.output_faces = in.out_faces.size();
+
+    // The input is the reference everything is compared with.
+    const Adjacency inp = build_adjacency(in.in_points.size(), in.in_faces, "input");
+    if (!inp.manifold || in.in_faces.empty()) {
+        for (const auto& p : inp.problems) fails.add("input", p);
+        if (in.in_faces.empty()) fails.add("input", "no faces");
+        report.notes.push_back("input is not a valid manifold mesh; output not checked");
+        fails.finish();
+        return report;
+    }
+    check_vertices(in, fails, report);
+    if (in.out_faces.empty()) {
+        fails.add("faces", "output has no faces");
+        fails.finish();
+        return report;
+    }
+    const Adjacency out = build_adjacency(in.out_points.size(), in.out_faces, "output");
+    check_topology(inp, out, fails, report);
+    Checked chk{in, inp, out, resolve_parents(in, out, fails), fails, report};
+    check_geometry(chk);
+    check_boundary_tiling(chk);
+    size_t num_components = 0;
+    const std::vector<uint32_t> strip_end = check_strips(chk, num_components);
+    check_indices(chk);
+    check_constraints(chk);
+    check_source_target(chk, strip_end.front());
+    check_cycles_request(chk, num_components);
     fails.finish();
     return report;
 }
