@@ -16,8 +16,6 @@
 namespace singlestrip::detail {
 namespace {
 
-constexpr uint32_t kNo = 0xffffffffu;
-
 /// One component as its own soup.
 struct Part {
     TriangleSoup soup;             // local vertex ids
@@ -27,22 +25,22 @@ struct Part {
 
 struct Split {
     std::vector<Part> parts;
-    std::vector<uint32_t> vertex_part, local_vertex;  // per global vertex (kNo when unused)
+    std::vector<uint32_t> vertex_part, local_vertex;  // per global vertex (kNone when unused)
     std::vector<uint32_t> local_face;                 // per global face
 };
 
 Split split_parts(const TriangleSoup& s, const std::vector<uint32_t>& comp, uint32_t count) {
     Split sp;
     sp.parts.resize(count);
-    sp.vertex_part.assign(s.points.size(), kNo);
-    sp.local_vertex.assign(s.points.size(), kNo);
-    sp.local_face.assign(s.triangles.size(), kNo);
+    sp.vertex_part.assign(s.points.size(), kNone);
+    sp.local_vertex.assign(s.points.size(), kNone);
+    sp.local_face.assign(s.triangles.size(), kNone);
     for (uint32_t f = 0; f < s.triangles.size(); ++f) {
         Part& p = sp.parts[comp[f]];
         Triangle t{};
         for (int k = 0; k < 3; ++k) {
             const uint32_t v = s.triangles[f][k];
-            if (sp.vertex_part[v] == kNo) {
+            if (sp.vertex_part[v] == kNone) {
                 sp.vertex_part[v] = comp[f];
                 sp.local_vertex[v] = static_cast<uint32_t>(p.vertex.size());
                 p.vertex.push_back(v);
@@ -64,7 +62,7 @@ uint32_t part_of_vertex(const Split& sp, const char* what, uint32_t v) {
     if (v >= sp.vertex_part.size())
         throw RequestError(std::string(what) + " vertex " + std::to_string(v) + " is out of range (mesh has " +
                            std::to_string(sp.vertex_part.size()) + " vertices)");
-    if (sp.vertex_part[v] == kNo) throw RequestError(std::string(what) + " vertex " + std::to_string(v) + " is not used by any face");
+    if (sp.vertex_part[v] == kNone) throw RequestError(std::string(what) + " vertex " + std::to_string(v) + " is not used by any face");
     return sp.vertex_part[v];
 }
 

@@ -17,7 +17,7 @@
 //      boundary half-edges)
 //   I6 face_parent_[f] < num_input_faces_
 //
-// Complexity: construction O(V + F) plus sorting each vertex's few edges; split O(1);
+// Complexity: construction O(V + F) (two counting sorts pair the half-edges); split O(1);
 // topology queries O(V + F).
 #pragma once
 
