@@ -230,8 +230,8 @@ int verify_result(const ss::TriangleSoup& in, const ss::StripArrays& out, const 
     vi.out_parent = out.parent;
     vi.indices = indices;
     vi.constraints = o.constraint_edges;
-    vi.source = o.source;
-    vi.target = o.target;
+    vi.source = ss::index_of(o.source);
+    vi.target = ss::index_of(o.target);
     const ss::VerifyReport rep = ss::verify(vi);
     if (!rep.ok()) std::snprintf(msg, msg_size, "%s", first_line(rep.failures.front()).c_str());
     return rep.ok() ? 1 : 0;
@@ -518,8 +518,8 @@ ConstraintRun measure_constraints(const Spec& spec, const Settings& cfg) {
                 if (pieces_after_cutting(soup, o.constraint_edges) == 1 || attempt == 50) break;
                 ++r.redrawn;
             }
-            o.source = soup.triangles[rng() % soup.triangles.size()][rng() % 3];
-            o.target = soup.triangles[rng() % soup.triangles.size()][rng() % 3];
+            o.source = ss::VertexId(soup.triangles[rng() % soup.triangles.size()][rng() % 3]);
+            o.target = ss::VertexId(soup.triangles[rng() % soup.triangles.size()][rng() % 3]);
             ConstraintRun::Case& c = r.c[i];
             c.constraint_edges = static_cast<uint32_t>(o.constraint_edges.size());
             for (int e = 0; e < kEngines; ++e) {

@@ -80,6 +80,12 @@ std::optional<uint32_t> based(const std::optional<uint32_t>& v, uint32_t base, c
     return ss::from_index_base(*v, base, what);
 }
 
+/// An optional number as an optional id of kind I.
+template <class I>
+std::optional<I> as_id(const std::optional<uint32_t>& v) {
+    return v ? std::optional<I>(I(*v)) : std::nullopt;
+}
+
 /// `--engine`: a CLI11 option whose bad value is a usage error listing the choices.
 CLI::Option* add_engine_option(CLI::App* app, std::function<void(ss::StripEngine)> set, const std::string& help) {
     auto* opt = app->add_option_function<std::string>(
@@ -254,10 +260,10 @@ private:
 ss::PipelineOptions pipeline_options(const StripArgs& a) {
     ss::PipelineOptions o;
     o.strip.engine = a.engine;
-    o.strip.seed_face = a.seed_face;
+    o.strip.seed_face = as_id<ss::FaceId>(a.seed_face);
     o.strip.greedy = !a.no_greedy;
-    o.strip.source = based(a.source, a.index_base, "--source");
-    o.strip.target = based(a.target, a.index_base, "--target");
+    o.strip.source = as_id<ss::VertexId>(based(a.source, a.index_base, "--source"));
+    o.strip.target = as_id<ss::VertexId>(based(a.target, a.index_base, "--target"));
     o.orient = a.orient;
     o.weld = a.fix.weld;
     o.repair = a.fix.repair;
@@ -601,7 +607,7 @@ int run_batch_mode(const StripArgs& sa) {
     b.repair = sa.fix.repair;
     b.join = sa.join;
     b.restart_index = sa.restart_index;
-    b.seed_face = sa.seed_face;
+    b.seed_face = as_id<ss::FaceId>(sa.seed_face);
     b.threads = sa.jobs;
     return ss::run_batch(sa.inputs, b, std::cout);
 }

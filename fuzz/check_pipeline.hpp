@@ -94,8 +94,8 @@ inline std::string check_result(const PipelineResult& r, const Request& req, con
     }
     vi.indices = r.indices;
     vi.constraints = req.strip.constraint_edges;
-    vi.source = req.strip.source;
-    vi.target = req.strip.target;
+    vi.source = index_of(req.strip.source);
+    vi.target = index_of(req.strip.target);
     // cycles.hpp guarantees a basis of H1 (2g+h-1 independent closed chains) for any seed,
     // constraints and source/target: verify() checks count and independence.
     if (r.cycles) vi.cycles = r.cycles->cycles;

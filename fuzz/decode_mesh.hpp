@@ -135,7 +135,7 @@ inline void decode_options(FuzzedDataProvider& in, const TriangleSoup& s, Reques
     req.strip.greedy = in.ConsumeBool();
     req.strip.validate_each_split = in.ConsumeIntegralInRange<int>(0, 7) == 0;
     if (nf == 0 || nv == 0) return;
-    if (in.ConsumeBool()) req.strip.seed_face = in.ConsumeIntegralInRange<uint32_t>(0, nf + (in.ConsumeBool() ? 2 : 0) - 1);
+    if (in.ConsumeBool()) req.strip.seed_face = FaceId(in.ConsumeIntegralInRange<uint32_t>(0, nf + (in.ConsumeBool() ? 2 : 0) - 1));
     const int polylines = in.ConsumeIntegralInRange<int>(0, 3);
     for (int p = 0; p < polylines; ++p) {
         // A walk along face edges: from a face corner, repeatedly step to a vertex of a face
@@ -159,8 +159,8 @@ inline void decode_options(FuzzedDataProvider& in, const TriangleSoup& s, Reques
     }
     if (in.ConsumeIntegralInRange<int>(0, 15) == 0)
         req.strip.constraint_edges.emplace_back(in.ConsumeIntegralInRange<uint32_t>(0, nv), in.ConsumeIntegralInRange<uint32_t>(0, nv - 1));
-    if (in.ConsumeIntegralInRange<int>(0, 3) == 0) req.strip.source = in.ConsumeIntegralInRange<uint32_t>(0, nv);
-    if (in.ConsumeIntegralInRange<int>(0, 3) == 0) req.strip.target = in.ConsumeIntegralInRange<uint32_t>(0, nv);
+    if (in.ConsumeIntegralInRange<int>(0, 3) == 0) req.strip.source = VertexId(in.ConsumeIntegralInRange<uint32_t>(0, nv));
+    if (in.ConsumeIntegralInRange<int>(0, 3) == 0) req.strip.target = VertexId(in.ConsumeIntegralInRange<uint32_t>(0, nv));
     req.cycles = in.ConsumeIntegralInRange<int>(0, 3) != 0;
 }
 
@@ -177,10 +177,11 @@ inline void dump(const TriangleSoup& s, const Request& req) {
     std::fprintf(stderr, "OFF\n%zu %zu 0\n", s.points.size(), s.triangles.size());
     for (const auto& p : s.points) std::fprintf(stderr, "%.17g %.17g %.17g\n", p[0], p[1], p[2]);
     for (const auto& t : s.triangles) std::fprintf(stderr, "3 %u %u %u\n", t[0], t[1], t[2]);
-    std::fprintf(stderr, "# engine=%s orient=%d greedy=%d cycles=%d seed_face=%lld source=%lld target=%lld constraints:",
-                 engine_name(req.strip.engine), req.orient, req.strip.greedy, req.cycles,
-                 req.strip.seed_face ? (long long)*req.strip.seed_face : -1LL, req.strip.source ? (long long)*req.strip.source : -1LL,
-                 req.strip.target ? (long long)*req.strip.target : -1LL);
+    std::fprintf(
+        stderr,
+        "# engine=%s orient=%d greedy=%d cycles=%d seed_face=%lld source=%lld target=%lld constraints:", engine_name(req.strip.engine),
+        req.orient, req.strip.greedy, req.cycles, req.strip.seed_face ? (long long)req.strip.seed_face->idx() : -1LL,
+        req.strip.source ? (long long)req.strip.source->idx() : -1LL, req.strip.target ? (long long)req.strip.target->idx() : -1LL);
     for (const auto& [a, b] : req.strip.constraint_edges) std::fprintf(stderr, " %u-%u", a, b);
     std::fprintf(stderr, "\n");
 }

@@ -26,9 +26,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     uint32_t nv = data[0] & 0x80 ? grid_nv : (static_cast<uint32_t>(data[0]) << 8 | data[1]);
     if ((data[0] & 0xc0) == 0x40) nv = 0xffffffffu - data[1];  // near the top of the range
     const std::string path = fuzzcheck::write_temp(data + 2, size - 2, ".txt");
-    std::vector<std::pair<uint32_t, uint32_t>> pairs;
+    std::vector<ConstraintEdge> edges;
     try {
-        pairs = read_constraints(path, nv);
+        edges = read_constraints(path, nv);
     } catch (const InputError& e) {
         if (std::strncmp(e.what(), path.c_str(), path.size()) != 0)
             fuzzcheck::finding(std::string("InputError message does not start with the path: ") + e.what());
@@ -36,11 +36,11 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     } catch (const std::exception& e) {
         fuzzcheck::finding(std::string("read_constraints threw a non-InputError: ") + e.what());
     }
-    for (const auto& [a, b] : pairs)
-        if (a >= nv || b >= nv) fuzzcheck::finding("read_constraints returned a pair out of range");
-    if (nv == grid_nv && pairs.size() <= 64) {
+    for (const ConstraintEdge& e : edges)
+        if (e.a >= nv || e.b >= nv) fuzzcheck::finding("read_constraints returned a pair out of range");
+    if (nv == grid_nv && edges.size() <= 64) {
         fuzzcheck::Request req;
-        req.strip.constraint_edges = pairs;
+        req.strip.constraint_edges = vertex_pairs(edges);
         if (auto p = fuzzcheck::check_pipeline(grid, req); !p.empty()) fuzzcheck::finding(p);
     }
     return 0;

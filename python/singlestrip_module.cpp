@@ -108,11 +108,27 @@ std::vector<ss::Triangle> to_faces(const py::handle& obj, size_t num_vertices, c
     return f;
 }
 
-std::optional<uint32_t> to_vertex(const py::object& o, const char* what) {
+/// A Python int (or None) as an optional index; ValueError naming `what` if it is negative or too large.
+std::optional<uint32_t> to_index(const py::object& o, const char* what) {
     if (o.is_none()) return std::nullopt;
     const long long v = o.cast<long long>();
     if (v < 0 || v > 0xfffffffeLL) throw py::value_error(std::string(what) + " " + std::to_string(v) + " is out of range");
     return static_cast<uint32_t>(v);
+}
+
+/// A vertex number for the verifier, which keeps plain indices.
+std::optional<uint32_t> to_vertex(const py::object& o, const char* what) {
+    return to_index(o, what);
+}
+
+std::optional<ss::VertexId> to_vertex_id(const py::object& o, const char* what) {
+    const auto v = to_index(o, what);
+    return v ? std::optional<ss::VertexId>(ss::VertexId(*v)) : std::nullopt;
+}
+
+std::optional<ss::FaceId> to_face_id(const py::object& o, const char* what) {
+    const auto f = to_index(o, what);
+    return f ? std::optional<ss::FaceId>(ss::FaceId(*f)) : std::nullopt;
 }
 
 /// Constraints: a sequence of polylines (each a sequence of >= 2 vertex ids, like one line of a
@@ -213,9 +229,9 @@ py::dict strip(const py::object& vertices, const py::object& faces, const py::ob
     ss::PipelineOptions opt;
     opt.strip.engine = to_engine(engine);
     opt.strip.greedy = greedy;
-    opt.strip.source = to_vertex(source, "source");
-    opt.strip.target = to_vertex(target, "target");
-    opt.strip.seed_face = to_vertex(seed_face, "seed_face");
+    opt.strip.source = to_vertex_id(source, "source");
+    opt.strip.target = to_vertex_id(target, "target");
+    opt.strip.seed_face = to_face_id(seed_face, "seed_face");
     opt.strip.constraint_edges = to_constraints(constraints, soup.points.size());
     opt.orient = orient;
     opt.repair = repair;

@@ -88,8 +88,10 @@ void make(const Picture& p, const fs::path& meshes, const fs::path& out) {
     render::RenderArgs args;
     if (!p.constraints_file.empty()) {
         opt.constraints_file = args.constraints = p.constraints_file;
-        opt.strip.source = args.source = p.source;
-        opt.strip.target = args.target = p.target;
+        args.source = p.source;
+        args.target = p.target;
+        opt.strip.source = p.source ? std::optional(VertexId(*p.source)) : std::nullopt;
+        opt.strip.target = p.target ? std::optional(VertexId(*p.target)) : std::nullopt;
     } else if (p.constrained) {
         // A constraint polyline across the model and source/target at its two far ends.
         const uint32_t a = extreme(soup, 0, -1), b = extreme(soup, 0, 1);
@@ -100,8 +102,10 @@ void make(const Picture& p, const fs::path& meshes, const fs::path& out) {
         for (size_t i = 0; i < path.size(); ++i) c << path[i] << (i + 1 < path.size() ? ' ' : '\n');
         c.close();
         opt.constraints_file = args.constraints = cfile.string();
-        opt.strip.source = args.source = a;
-        opt.strip.target = args.target = b;
+        args.source = a;
+        args.target = b;
+        opt.strip.source = VertexId(a);
+        opt.strip.target = VertexId(b);
         std::printf("%s: constraints %s, --source %u --target %u\n", p.name.c_str(), cfile.c_str(), a, b);
     }
     const PipelineResult r = stripify(std::move(soup), opt);

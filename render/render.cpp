@@ -404,8 +404,8 @@ Drawable read_result(const RenderArgs& a) {
 Drawable strip_input(const RenderArgs& a) {
     PipelineOptions o;
     o.strip.engine = *a.engine;
-    if (a.source) o.strip.source = from_index_base(*a.source, a.index_base, "--source");
-    if (a.target) o.strip.target = from_index_base(*a.target, a.index_base, "--target");
+    if (a.source) o.strip.source = VertexId(from_index_base(*a.source, a.index_base, "--source"));
+    if (a.target) o.strip.target = VertexId(from_index_base(*a.target, a.index_base, "--target"));
     o.constraints_file = a.constraints;
     o.index_base = a.index_base;
     o.cycles = a.with_cycles;
@@ -436,7 +436,8 @@ Overlays overlays_of(const RenderArgs& a, const Drawable& d) {
         ov.closed_polylines.push_back(cycle_polyline(d.arrays, d.cycles[c]));
     }
     if (a.constraints)
-        for (const auto& [u, v] : read_constraints_based(*a.constraints, nv, a.index_base)) ov.segments.emplace_back(pts[u], pts[v]);
+        for (const ConstraintEdge& e : read_constraints_based(*a.constraints, nv, a.index_base))
+            ov.segments.emplace_back(pts[e.a], pts[e.b]);
     auto vertex = [&](uint32_t v, const char* what) {
         const uint32_t i = from_index_base(v, a.index_base, std::string("--") + what);
         if (i >= nv)

@@ -5,18 +5,16 @@
 
 #include <algorithm>
 #include <string>
-#include <unordered_set>
 #include <utility>
 #include <vector>
 
 #include "singlestrip/encode.hpp"
 #include "singlestrip/errors.hpp"
 #include "singlestrip/mesh.hpp"
+#include "soup_edges.hpp"
 
 namespace singlestrip::detail {
 namespace {
-
-constexpr uint32_t kNo = 0xffffffffu;
 
 /// One component as its own soup.
 struct Part {
@@ -27,22 +25,22 @@ struct Part {
 
 struct Split {
     std::vector<Part> parts;
-    std::vector<uint32_t> vertex_part, local_vertex;  // per global vertex (kNo when unused)
+    std::vector<uint32_t> vertex_part, local_vertex;  // per global vertex (kNone when unused)
     std::vector<uint32_t> local_face;                 // per global face
 };
 
 Split split_parts(const TriangleSoup& s, const std::vector<uint32_t>& comp, uint32_t count) {
     Split sp;
     sp.parts.resize(count);
-    sp.vertex_part.assign(s.points.size(), kNo);
-    sp.local_vertex.assign(s.points.size(), kNo);
-    sp.local_face.assign(s.triangles.size(), kNo);
+    sp.vertex_part.assign(s.points.size(), kNone);
+    sp.local_vertex.assign(s.points.size(), kNone);
+    sp.local_face.assign(s.triangles.size(), kNone);
     for (uint32_t f = 0; f < s.triangles.size(); ++f) {
         Part& p = sp.parts[comp[f]];
         Triangle t{};
         for (int k = 0; k < 3; ++k) {
             const uint32_t v = s.triangles[f][k];
-            if (sp.vertex_part[v] == kNo) {
+            if (sp.vertex_part[v] == kNone) {
                 sp.vertex_part[v] = comp[f];
                 sp.local_vertex[v] = static_cast<uint32_t>(p.vertex.size());
                 p.vertex.push_back(v);
@@ -64,7 +62,7 @@ uint32_t part_of_vertex(const Split& sp, const char* what, uint32_t v) {
     if (v >= sp.vertex_part.size())
         throw RequestError(std::string(what) + " vertex " + std::to_string(v) + " is out of range (mesh has " +
                            std::to_string(sp.vertex_part.size()) + " vertices)");
-    if (sp.vertex_part[v] == kNo) throw RequestError(std::string(what) + " vertex " + std::to_string(v) + " is not used by any face");
+    if (sp.vertex_part[v] == kNone) throw RequestError(std::string(what) + " vertex " + std::to_string(v) + " is not used by any face");
     return sp.vertex_part[v];
 }
 
@@ -72,12 +70,12 @@ uint32_t part_of_vertex(const Split& sp, const char* what, uint32_t v) {
 std::vector<uint32_t> part_order(const Split& sp, const StripOptions& o) {
     std::vector<uint32_t> order;
     std::optional<uint32_t> first;
-    if (o.source) first = part_of_vertex(sp, "source", *o.source);
+    if (o.source) first = part_of_vertex(sp, "source", o.source->idx());
     if (o.target) {
-        const uint32_t t = part_of_vertex(sp, "target", *o.target);
+        const uint32_t t = part_of_vertex(sp, "target", o.target->idx());
         if (first && *first != t)
-            throw RequestError("source vertex " + std::to_string(*o.source) + " is in component " + std::to_string(*first) +
-                               " and target vertex " + std::to_string(*o.target) + " in component " + std::to_string(t) + " (of " +
+            throw RequestError("source vertex " + std::to_string(o.source->idx()) + " is in component " + std::to_string(*first) +
+                               " and target vertex " + std::to_string(o.target->idx()) + " in component " + std::to_string(t) + " (of " +
                                std::to_string(sp.parts.size()) +
                                " edge-connected components): source and target start and end one strip, so they must be in "
                                "the same component");
@@ -97,9 +95,9 @@ StripOptions part_options(const Split& sp, const std::vector<uint32_t>& comp, co
     local.source.reset();
     local.target.reset();
     local.constraint_edges.clear();
-    if (o.seed_face && comp[*o.seed_face] == c) local.seed_face = sp.local_face[*o.seed_face];
-    if (o.source && sp.vertex_part[*o.source] == c) local.source = sp.local_vertex[*o.source];
-    if (o.target && sp.vertex_part[*o.target] == c) local.target = sp.local_vertex[*o.target];
+    if (o.seed_face && comp[o.seed_face->idx()] == c) local.seed_face = FaceId(sp.local_face[o.seed_face->idx()]);
+    if (o.source && sp.vertex_part[o.source->idx()] == c) local.source = VertexId(sp.local_vertex[o.source->idx()]);
+    if (o.target && sp.vertex_part[o.target->idx()] == c) local.target = VertexId(sp.local_vertex[o.target->idx()]);
     for (const auto& [u, v] : edges_ok)
         if (sp.vertex_part[u] == c) local.constraint_edges.emplace_back(sp.local_vertex[u], sp.local_vertex[v]);
     return local;
@@ -107,24 +105,20 @@ StripOptions part_options(const Split& sp, const std::vector<uint32_t>& comp, co
 
 void check_requests(const TriangleSoup& s, const StripOptions& o) {
     const auto nf = s.triangles.size();
-    if (o.seed_face && *o.seed_face >= nf)
-        throw RequestError("seed face " + std::to_string(*o.seed_face) + " is out of range (mesh has " + std::to_string(nf) + " faces)");
+    if (o.seed_face && o.seed_face->idx() >= nf)
+        throw RequestError("seed face " + std::to_string(o.seed_face->idx()) + " is out of range (mesh has " + std::to_string(nf) +
+                           " faces)");
     if (o.seed_face && o.source) {
-        const Triangle& t = s.triangles[*o.seed_face];
-        if (t[0] != *o.source && t[1] != *o.source && t[2] != *o.source)
-            throw RequestError("seed face " + std::to_string(*o.seed_face) + " is not incident to source vertex " +
-                               std::to_string(*o.source));
+        const Triangle& t = s.triangles[o.seed_face->idx()];
+        if (t[0] != o.source->idx() && t[1] != o.source->idx() && t[2] != o.source->idx())
+            throw RequestError("seed face " + std::to_string(o.seed_face->idx()) + " is not incident to source vertex " +
+                               std::to_string(o.source->idx()));
     }
     if (o.constraint_edges.empty()) return;
-    std::unordered_set<uint64_t> edges;
-    for (const Triangle& t : s.triangles)
-        for (int k = 0; k < 3; ++k) {
-            const uint64_t a = t[k], b = t[(k + 1) % 3];
-            edges.insert((std::min(a, b) << 32) | std::max(a, b));
-        }
+    const SoupEdges edges(s.triangles, s.points.size());
     for (std::size_t i = 0; i < o.constraint_edges.size(); ++i) {
-        const uint64_t a = o.constraint_edges[i].first, b = o.constraint_edges[i].second;
-        if (!edges.count((std::min(a, b) << 32) | std::max(a, b)))
+        const uint32_t a = o.constraint_edges[i].first, b = o.constraint_edges[i].second;
+        if (!edges.has_edge(a, b))
             throw RequestError("constraint " + std::to_string(i) + ": (" + std::to_string(a) + ", " + std::to_string(b) +
                                ") is not an edge of the mesh");
     }

@@ -4,14 +4,10 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
-#include <iomanip>
-#include <limits>
-#include <sstream>
 #include <string>
 #include <utility>
 
 #include "singlestrip/errors.hpp"
-#include "singlestrip/io.hpp"
 #include "singlestrip/tree_cotree.hpp"
 
 namespace singlestrip {
@@ -37,7 +33,7 @@ public:
         for (size_t head = 0; head < queue_.size() && !seen(to); ++head) {
             const uint32_t f = queue_[head];
             for (uint32_t k = 0; k < 3; ++k) {
-                const uint32_t g = mesh_.neighbor(Mesh::halfedge(f, k));
+                const uint32_t g = mesh_.neighbor(Mesh::halfedge(FaceId(f), k)).idx();
                 if (g == kNone || g == avoid || seen(g)) continue;
                 if (time && ((*time)[g] == kNone || (*time)[g] <= after)) continue;
                 visit(g, f);
@@ -142,8 +138,8 @@ struct Candidate {
 std::vector<uint32_t> neighbors_by_position(const StripView& v, uint32_t t, uint32_t p) {
     std::vector<uint32_t> nb;
     for (uint32_t k = 0; k < 3; ++k) {
-        const uint32_t g = v.mesh.neighbor(Mesh::halfedge(t, k));
-        if (g != kNone && std::find(nb.begin(), nb.end(), g) == nb.end()) nb.push_back(g);
+        const FaceId g = v.mesh.neighbor(Mesh::halfedge(FaceId(t), k));
+        if (g.valid() && std::find(nb.begin(), nb.end(), g.idx()) == nb.end()) nb.push_back(g.idx());
     }
     if (nb.size() < 2)
         throw InternalError("fundamental cycles: fundamental triangle at position " + std::to_string(p) + " has fewer than two neighbours");
@@ -159,7 +155,7 @@ std::vector<uint32_t> steepest_ascent(const StripView& v, uint32_t t, uint32_t s
     for (uint32_t cur = s; cur != d;) {
         uint32_t best = kNone;
         for (uint32_t k = 0; k < 3; ++k) {
-            const uint32_t g = v.mesh.neighbor(Mesh::halfedge(cur, k));
+            const uint32_t g = v.mesh.neighbor(Mesh::halfedge(FaceId(cur), k)).idx();
             if (g == kNone || g == t || v.pos[g] > v.pos[d]) continue;
             if (best == kNone || v.pos[g] > v.pos[best]) best = g;
         }
@@ -176,7 +172,7 @@ std::vector<uint32_t> steepest_descent(const StripView& v, uint32_t t, uint32_t 
     for (uint32_t cur = d; cur != s;) {
         uint32_t best = kNone;
         for (uint32_t k = 0; k < 3; ++k) {
-            const uint32_t g = v.mesh.neighbor(Mesh::halfedge(cur, k));
+            const uint32_t g = v.mesh.neighbor(Mesh::halfedge(FaceId(cur), k)).idx();
             if (g == kNone || g == t || v.pos[g] < v.pos[s]) continue;
             if (best == kNone || v.pos[g] < v.pos[best]) best = g;
         }
@@ -311,8 +307,8 @@ bool choose_nested(const StripView& v, FaceSearch& search, const std::vector<uin
         if (p == 0 || (i > 0 && p <= fundamental[i - 1])) return false;
         uint32_t later = 0;
         for (uint32_t k = 0; k < 3; ++k) {
-            const uint32_t g = v.mesh.neighbor(Mesh::halfedge(v.order[p], k));
-            later += g != kNone && v.pos[g] > p;
+            const FaceId g = v.mesh.neighbor(Mesh::halfedge(FaceId(v.order[p]), k));
+            later += g.valid() && v.pos[g.idx()] > p;
         }
         if (later != 2) return false;
         std::vector<Candidate> cand = candidates_for(v, search, p);
@@ -436,51 +432,13 @@ double cycle_length(const StripArrays& arrays, const std::vector<uint32_t>& cycl
     return len;
 }
 
-void write_cycles_json(const std::string& path, const Cycles& cycles) {
-    std::ostringstream os;
-    os << std::setprecision(std::numeric_limits<double>::max_digits10);
-    os << "{\"cycles\": [";
-    for (size_t i = 0; i < cycles.cycles.size(); ++i) {
-        os << (i ? ",\n  [" : "\n  [");
-        for (size_t j = 0; j < cycles.cycles[i].size(); ++j) os << (j ? "," : "") << cycles.cycles[i][j];
-        os << "]";
-    }
-    os << (cycles.cycles.empty() ? "],\n \"lengths\": [" : "\n ],\n \"lengths\": [");
-    for (size_t i = 0; i < cycles.lengths.size(); ++i) {
-        const double l = cycles.lengths[i];
-        os << (i ? ", " : "");
-        if (std::isfinite(l))
-            os << l;
-        else
-            os << "null";  // JSON has no NaN/Inf
-    }
-    os << "]}\n";
-    write_text_atomic(path, os.str());
-}
-
-void write_cycles_obj(const std::string& path, const StripArrays& arrays, const Cycles& cycles) {
-    std::ostringstream os;
-    os << std::setprecision(std::numeric_limits<double>::max_digits10);
-    os << "# singlestrip fundamental cycles: " << cycles.cycles.size()
-       << " closed polylines through face centroids and shared-edge midpoints\n";
-    std::vector<std::pair<size_t, size_t>> ranges;  // first OBJ vertex (1-based), count
-    size_t next = 1;
-    for (const auto& cycle : cycles.cycles) {
-        for (const uint32_t f : cycle)
-            if (f >= arrays.faces.size()) throw OutputError("cycles OBJ '" + path + "': face " + std::to_string(f) + " out of range");
-        const std::vector<Point3> pts = cycle_polyline(arrays, cycle);
-        for (const Point3& q : pts) os << "v " << q[0] << ' ' << q[1] << ' ' << q[2] << '\n';
-        ranges.emplace_back(next, pts.size());
-        next += pts.size();
-    }
-    for (size_t i = 0; i < ranges.size(); ++i) {
-        const auto [first, count] = ranges[i];
-        if (count < 2) continue;  // a single point is not a polyline
-        os << "o cycle_" << i << "\nl";
-        for (size_t k = 0; k < count; ++k) os << ' ' << first + k;
-        os << ' ' << first << '\n';
-    }
-    write_text_atomic(path, os.str());
+Cycles tree_cotree_cycles(const StripResult& result) {
+    Cycles out;
+    out.cycles = tree_cotree_generators(result.mesh, result.order);
+    const StripArrays arrays = strip_arrays(result);
+    out.lengths.reserve(out.cycles.size());
+    for (const auto& c : out.cycles) out.lengths.push_back(cycle_length(arrays, c));
+    return out;
 }
 
 }  // namespace singlestrip

@@ -45,9 +45,9 @@ struct VertexFans {
     std::vector<uint8_t> on_boundary;
     explicit VertexFans(const Mesh& mesh)
         : valence(mesh.num_vertices(), 0), in_region(mesh.num_vertices(), 0), on_boundary(mesh.num_vertices(), 0) {
-        for (uint32_t h = 0; h < mesh.num_halfedges(); ++h) {
-            ++valence[mesh.from(h)];
-            if (mesh.is_boundary(h)) on_boundary[mesh.from(h)] = on_boundary[mesh.to(h)] = 1;
+        for (const HalfedgeId h : mesh.halfedges()) {
+            ++valence[mesh.from(h).idx()];
+            if (mesh.is_boundary(h)) on_boundary[mesh.from(h).idx()] = on_boundary[mesh.to(h).idx()] = 1;
         }
     }
 };
@@ -55,23 +55,23 @@ struct VertexFans {
 /// beta1 gained by adding face t to the region `in` (then the caller adds it). Vertices count
 /// once per fan piece, so a vertex whose two edges in t are both shared loses a piece (two
 /// pieces merge) unless t closes its fan (then it stays one piece, now interior).
-long long beta1_gain(const Mesh& mesh, uint32_t t, const std::vector<uint8_t>& in, FaceSets& sets, const VertexFans& fans) {
+long long beta1_gain(const Mesh& mesh, FaceId t, const std::vector<uint8_t>& in, FaceSets& sets, const VertexFans& fans) {
     bool shared[3];
     uint32_t roots[3];
     int s = 0, components = 0;
     for (uint32_t k = 0; k < 3; ++k) {
-        const uint32_t g = mesh.neighbor(Mesh::halfedge(t, k));
-        shared[k] = g != kNone && in[g];
+        const FaceId g = mesh.neighbor(Mesh::halfedge(t, k));
+        shared[k] = g.valid() && in[g.idx()];
         if (!shared[k]) continue;
         ++s;
-        const uint32_t r = sets.find(g);
+        const uint32_t r = sets.find(g.idx());
         bool seen = false;
         for (int c = 0; c < components; ++c) seen = seen || roots[c] == r;
         if (!seen) roots[components++] = r;
     }
     long long dchi = 1 - (3 - s);  // the face and its new edges
     for (uint32_t k = 0; k < 3; ++k) {
-        const uint32_t v = mesh.from(Mesh::halfedge(t, k));
+        const uint32_t v = mesh.from(Mesh::halfedge(t, k)).idx();
         const int at_v = shared[k] + shared[(k + 2) % 3];  // half-edges k and prev(k) touch v
         const bool closes_fan = !fans.on_boundary[v] && fans.in_region[v] + 1 == fans.valence[v];
         if (at_v == 0) dchi += 1;                 // a new piece
@@ -92,16 +92,16 @@ std::vector<uint32_t> replay_fundamental_positions(const Mesh& mesh, const std::
     const bool closed = mesh.num_boundary_edges() == 0;
     std::vector<uint32_t> found;  // positions, largest first
     for (uint32_t i = nf; i-- > 0;) {
-        const uint32_t t = order[i];
-        if (t >= nf || in[t]) throw InternalError("fundamental replay: strip order is not a permutation");
+        const FaceId t(order[i]);
+        if (t.idx() >= nf || in[t.idx()]) throw InternalError("fundamental replay: strip order is not a permutation");
         long long gain = beta1_gain(mesh, t, in, sets, fans);
         if (i == 0 && closed) gain += 1;  // the last face closes the surface: beta2 becomes 1
         for (long long c = 0; c < gain; ++c) found.push_back(i);
-        in[t] = 1;
+        in[t.idx()] = 1;
         for (uint32_t k = 0; k < 3; ++k) {
-            ++fans.in_region[mesh.from(Mesh::halfedge(t, k))];
-            const uint32_t g = mesh.neighbor(Mesh::halfedge(t, k));
-            if (g != kNone && in[g]) sets.unite(t, g);
+            ++fans.in_region[mesh.from(Mesh::halfedge(t, k)).idx()];
+            const FaceId g = mesh.neighbor(Mesh::halfedge(t, k));
+            if (g.valid() && in[g.idx()]) sets.unite(t.idx(), g.idx());
         }
     }
     return {found.rbegin(), found.rend()};

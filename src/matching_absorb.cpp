@@ -17,26 +17,26 @@ namespace singlestrip::matching {
 
 std::vector<uint32_t> MatchingBuilder::loop_from(uint32_t cut) const {
     std::vector<uint32_t> seq;
-    uint32_t in = cut, f = Mesh::face(cut);
+    uint32_t in = cut, f = Mesh::face(HalfedgeId(cut)).idx();
     for (;;) {
         seq.push_back(f);
         uint32_t out = kNone;
         for (uint32_t h = 3 * f; h < 3 * f + 3; ++h)
             if (used_[h] && h != in) out = h;
-        if (out == kNone || out == mesh_.twin(cut)) return seq;
-        in = mesh_.twin(out);
-        f = Mesh::face(in);
+        if (out == kNone || out == mesh_.twin(HalfedgeId(cut)).idx()) return seq;
+        in = mesh_.twin(HalfedgeId(out)).idx();
+        f = Mesh::face(HalfedgeId(in)).idx();
     }
 }
 
 // 1 if the GL strip needs a swap at crossed half-edge h: the turns in its two faces (the faces'
 // edges left uncrossed) pivot on the same endpoint of h. Path ends make no turn.
 int MatchingBuilder::swap_at(uint32_t h) const {
-    const uint32_t t = mesh_.twin(h);
-    const uint32_t f = Mesh::face(h), g = Mesh::face(t);
+    const uint32_t t = mesh_.twin(HalfedgeId(h)).idx();
+    const uint32_t f = Mesh::face(HalfedgeId(h)).idx(), g = Mesh::face(HalfedgeId(t)).idx();
     if (hdeg(f) != 2 || hdeg(g) != 2) return 0;
-    const bool f_at_from = !used_[Mesh::prev(h)];  // f's uncrossed edge touches from(h)
-    const bool g_at_from = !used_[Mesh::next(t)];  // g's uncrossed edge touches to(t) = from(h)
+    const bool f_at_from = !used_[Mesh::prev(HalfedgeId(h)).idx()];  // f's uncrossed edge touches from(h)
+    const bool g_at_from = !used_[Mesh::next(HalfedgeId(t)).idx()];  // g's uncrossed edge touches to(t) = from(h)
     return f_at_from == g_at_from;
 }
 
@@ -48,7 +48,7 @@ int MatchingBuilder::swaps_around(std::initializer_list<uint32_t> faces) const {
     for (uint32_t f : faces)
         for (uint32_t h = 3 * f; h < 3 * f + 3; ++h) {
             if (!used_[h]) continue;
-            const uint32_t key = std::min(h, mesh_.twin(h));
+            const uint32_t key = std::min(h, mesh_.twin(HalfedgeId(h)).idx());
             if (std::find(seen, seen + n, key) != seen + n) continue;
             seen[n++] = key;
             sum += swap_at(h);
@@ -104,7 +104,7 @@ void PathGrower::start(uint32_t path_root) {
         for (uint32_t prev = kNone, f = end;;) {
             uint32_t next = kNone;
             for (uint32_t h = 3 * f; h < 3 * f + 3; ++h)
-                if (b_.used_[h] && b_.mesh_.neighbor(h) != prev) next = b_.mesh_.neighbor(h);
+                if (b_.used_[h] && b_.mesh_.neighbor(HalfedgeId(h)).idx() != prev) next = b_.mesh_.neighbor(HalfedgeId(h)).idx();
             if (next == kNone) break;
             seq.push_back(next);
             prev = f, f = next;
@@ -118,12 +118,12 @@ void PathGrower::start(uint32_t path_root) {
     uint32_t cut = kNone;
     for (uint32_t h = 0; cut == kNone; ++h)
         if (b_.used_[h]) cut = h;
-    root_ = b_.find(b_.sid_[Mesh::face(cut)]);
+    root_ = b_.find(b_.sid_[Mesh::face(HalfedgeId(cut)).idx()]);
     path_.append(b_.loop_from(cut));
     b_.set_pair(b_.used_, cut, 0);
     b_.cycle_[root_] = 0;
-    ends_[0] = Mesh::face(cut);
-    ends_[1] = b_.mesh_.neighbor(cut);
+    ends_[0] = Mesh::face(HalfedgeId(cut)).idx();
+    ends_[1] = b_.mesh_.neighbor(HalfedgeId(cut)).idx();
     --loops_;
 }
 
@@ -133,11 +133,11 @@ PathGrower::Take PathGrower::best_take(uint32_t side) {
     const uint32_t e = ends_[side];
     for (uint32_t h = 3 * e; h < 3 * e + 3; ++h) {
         if (!b_.passable(h) || b_.used_[h]) continue;
-        const uint32_t g = b_.mesh_.neighbor(h), r = b_.find(b_.sid_[g]);
+        const uint32_t g = b_.mesh_.neighbor(HalfedgeId(h)).idx(), r = b_.find(b_.sid_[g]);
         if (r == root_ || !b_.cycle_[r] || b_.pinned_[r]) continue;
         for (uint32_t gc = 3 * g; gc < 3 * g + 3; ++gc) {
             if (!b_.used_[gc]) continue;
-            const uint32_t c = b_.mesh_.neighbor(gc);
+            const uint32_t c = b_.mesh_.neighbor(HalfedgeId(gc)).idx();
             const int before = b_.swaps_around({e, g, c});
             b_.set_pair(b_.used_, gc, 0), b_.set_pair(b_.used_, h, 1);
             const int cost = b_.swaps_around({e, g, c}) - before;
@@ -150,7 +150,7 @@ PathGrower::Take PathGrower::best_take(uint32_t side) {
 
 void PathGrower::take(uint32_t side, const Take& t) {
     std::vector<uint32_t> seq = b_.loop_from(t.cut);
-    b_.uf_[b_.find(b_.sid_[Mesh::face(t.cut)])] = root_;
+    b_.uf_[b_.find(b_.sid_[Mesh::face(HalfedgeId(t.cut)).idx()])] = root_;
     b_.set_pair(b_.used_, t.cut, 0);
     b_.set_pair(b_.used_, t.link, 1);
     side ? path_.append(seq) : path_.prepend(seq);
@@ -163,13 +163,13 @@ void PathGrower::take(uint32_t side, const Take& t) {
 
 // h: a free edge of ends_[side] into face x of the path.
 void PathGrower::rotate(uint32_t side, uint32_t h) {
-    const uint32_t e = ends_[side], x = b_.mesh_.neighbor(h), px = path_.position(x), n = path_.size();
+    const uint32_t e = ends_[side], x = b_.mesh_.neighbor(HalfedgeId(h)).idx(), px = path_.position(x), n = path_.size();
     if (side ? px + 2 >= n : px < 2) return;  // x is the end's own neighbour
     const uint32_t from = side ? px + 1 : px;
     const uint32_t y = path_.at(side ? px + 1 : px - 1);
     uint32_t xy = kNone;
     for (uint32_t k = 3 * x; k < 3 * x + 3; ++k)
-        if (b_.used_[k] && b_.mesh_.neighbor(k) == y) xy = k;
+        if (b_.used_[k] && b_.mesh_.neighbor(HalfedgeId(k)).idx() == y) xy = k;
     const int before = b_.swaps_around({e, x, y});
     b_.set_pair(b_.used_, xy, 0);
     b_.set_pair(b_.used_, h, 1);
@@ -185,7 +185,7 @@ void PathGrower::undo_trial() {
         reverse(r.side, r.from);
         b_.set_pair(b_.used_, r.link, 0);
         b_.set_pair(b_.used_, r.dropped, 1);
-        ends_[r.side] = Mesh::face(r.link);
+        ends_[r.side] = Mesh::face(HalfedgeId(r.link)).idx();
     }
     trial_.clear();
     trial_cost_ = 0;
@@ -211,7 +211,7 @@ void PathGrower::run(uint32_t path_root) {
         rng ^= rng << 13, rng ^= rng >> 7, rng ^= rng << 17;
         const uint32_t side = rng & 1, h = 3 * ends_[side] + (rng >> 1) % 3;
         --budget, ++idle;
-        if (b_.passable(h) && !b_.used_[h] && b_.find(b_.sid_[b_.mesh_.neighbor(h)]) == root_) rotate(side, h);
+        if (b_.passable(h) && !b_.used_[h] && b_.find(b_.sid_[b_.mesh_.neighbor(HalfedgeId(h)).idx()]) == root_) rotate(side, h);
         if (trial_cost_ >= kSplitCost + 6) undo_trial();  // too far from the pattern: back to the last take
     }
     undo_trial();

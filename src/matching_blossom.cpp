@@ -40,12 +40,12 @@ uint32_t MatchingBuilder::blossom_lca(uint32_t a, uint32_t b) {
         bl_seen_[a] = bl_mark_;
         const uint32_t m = mate_edge(a);
         if (m == kNone) break;  // the root
-        a = Mesh::face(bl_parent_[mesh_.neighbor(m)]);
+        a = face_of(bl_parent_[across(m)]);
     }
     for (;;) {
         b = blossom_base(b);
         if (bl_seen_[b] == bl_mark_) return b;
-        b = Mesh::face(bl_parent_[mesh_.neighbor(mate_edge(b))]);
+        b = face_of(bl_parent_[across(mate_edge(b))]);
     }
 }
 
@@ -54,10 +54,10 @@ uint32_t MatchingBuilder::blossom_lca(uint32_t a, uint32_t b) {
 // path only), and queueing the odd faces met, which are even inside the blossom.
 void MatchingBuilder::blossom_mark(uint32_t v, uint32_t b, uint32_t into_v) {
     while (blossom_base(v) != b) {
-        const uint32_t u = mesh_.neighbor(mate_edge(v)), bv = blossom_base(v), bu = blossom_base(u);
+        const uint32_t u = across(mate_edge(v)), bv = blossom_base(v), bu = blossom_base(u);
         bl_parent_[v] = into_v;
-        into_v = mesh_.twin(bl_parent_[u]);
-        const uint32_t next = Mesh::face(bl_parent_[u]);
+        into_v = twin_of(bl_parent_[u]);
+        const uint32_t next = face_of(bl_parent_[u]);
         if (bl_label_[u] == kOdd) bl_label_[u] = kEven, bl_queue_.push_back(u);
         bl_merge_.push_back(bv);
         bl_merge_.push_back(bu);
@@ -70,7 +70,7 @@ void MatchingBuilder::blossom_mark(uint32_t v, uint32_t b, uint32_t into_v) {
 void MatchingBuilder::blossom_contract(uint32_t v, uint32_t to, uint32_t h) {
     const uint32_t b = blossom_lca(v, to);
     bl_merge_.clear();
-    blossom_mark(v, b, mesh_.twin(h));
+    blossom_mark(v, b, twin_of(h));
     blossom_mark(to, b, h);
     for (uint32_t x : bl_merge_) bl_base_[x] = b;
 }
@@ -78,10 +78,10 @@ void MatchingBuilder::blossom_contract(uint32_t v, uint32_t to, uint32_t h) {
 // Flips the alternating path that ends at the exposed face `end`.
 void MatchingBuilder::blossom_augment(uint32_t end) {
     for (uint32_t v = end; v != kNone;) {
-        const uint32_t h = bl_parent_[v], pv = Mesh::face(h), old = mate_edge(pv);
+        const uint32_t h = bl_parent_[v], pv = face_of(h), old = mate_edge(pv);
         set_pair(matched_, h, 1);
         if (old != kNone) set_pair(matched_, old, 0);
-        v = old == kNone ? kNone : mesh_.neighbor(old);
+        v = old == kNone ? kNone : across(old);
     }
 }
 
@@ -112,7 +112,7 @@ MatchingBuilder::Search MatchingBuilder::blossom_search(uint32_t root, size_t bu
         const uint32_t v = bl_queue_[head];
         for (uint32_t h = 3 * v; h < 3 * v + 3; ++h) {
             if (!passable(h) || matched_[h]) continue;
-            const uint32_t to = mesh_.neighbor(h);
+            const uint32_t to = across(h);
             if (!in_blossom_graph(to)) {
                 exact = false;
                 continue;
@@ -131,7 +131,7 @@ MatchingBuilder::Search MatchingBuilder::blossom_search(uint32_t root, size_t bu
                     quota_[to] = 0;
                     return Search::Found;
                 }
-                const uint32_t w = mesh_.neighbor(m);
+                const uint32_t w = across(m);
                 if (!in_blossom_graph(w)) {
                     exact = false;
                     continue;

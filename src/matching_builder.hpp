@@ -46,13 +46,17 @@ private:
     // Augmenting search, per face: the outer face it was reached from and the two edges used.
     std::vector<uint32_t> aug_prev_, aug_matched_, aug_unmatched_, aug_queue_;
 
-    [[nodiscard]] bool passable(uint32_t h) const { return !mesh_.is_boundary(h) && !blocked_[h]; }
+    // The engine keeps flat per-half-edge and per-face arrays, so it navigates by plain index.
+    [[nodiscard]] uint32_t across(uint32_t h) const { return mesh_.neighbor(HalfedgeId(h)).idx(); }
+    [[nodiscard]] uint32_t twin_of(uint32_t h) const { return mesh_.twin(HalfedgeId(h)).idx(); }
+    [[nodiscard]] static uint32_t face_of(uint32_t h) { return h / 3; }
+    [[nodiscard]] bool passable(uint32_t h) const { return !mesh_.is_boundary(HalfedgeId(h)) && !blocked_[h]; }
     [[nodiscard]] uint32_t degree(uint32_t f) const { return passable(3 * f) + passable(3 * f + 1) + passable(3 * f + 2); }
     /// Links of f in the loops-and-paths graph, the virtual face included.
     [[nodiscard]] uint32_t hdeg(uint32_t f) const { return used_[3 * f] + used_[3 * f + 1] + used_[3 * f + 2] + vlink_[f]; }
     void set_pair(std::vector<uint8_t>& a, uint32_t h, uint8_t value) {
         a[h] = value;
-        a[mesh_.twin(h)] = value;
+        a[mesh_.twin(HalfedgeId(h)).idx()] = value;
     }
     uint32_t find(uint32_t s) {
         while (uf_[s] != s) s = uf_[s] = uf_[uf_[s]];

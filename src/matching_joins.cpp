@@ -32,7 +32,7 @@ void MatchingBuilder::label_structures() {
                 stack.push_back(g);
             };
             for (uint32_t k = 0; k < 3; ++k)
-                if (used_[3 * f + k]) visit(mesh_.neighbor(3 * f + k));
+                if (used_[3 * f + k]) visit(mesh_.neighbor(HalfedgeId(3 * f + k)).idx());
             if (vlink_[f]) {
                 pinned = true;
                 for (uint32_t i = 0; i < num_pins_; ++i) visit(pins_[i]);
@@ -54,7 +54,7 @@ bool MatchingBuilder::meets_first(uint32_t from, uint32_t back, uint32_t good, u
         if (cur == bad) return false;
         uint32_t next = kNone;
         for (uint32_t h = 3 * cur; h < 3 * cur + 3; ++h)
-            if (used_[h] && mesh_.neighbor(h) != prev) next = mesh_.neighbor(h);
+            if (used_[h] && mesh_.neighbor(HalfedgeId(h)).idx() != prev) next = mesh_.neighbor(HalfedgeId(h)).idx();
         if (next == kNone) return false;
         prev = cur;
         cur = next;
@@ -75,14 +75,15 @@ bool MatchingBuilder::flip_alternating(uint32_t f1) {
     for (uint32_t h = 3 * f1; h < 3 * f1 + 3; ++h)
         if (matched_[h]) m1 = h;
     if (m1 == kNone) return false;
-    const uint32_t close_face = mesh_.neighbor(m1);
+    const uint32_t close_face = mesh_.neighbor(HalfedgeId(m1)).idx();
     if (find(sid_[close_face]) == find(sid_[f1])) return false;  // cheap filter: rarely joins loops
     uint32_t path[2 * kMaxLoops];                                // crossed edge, then matched edge, in turn
     uint32_t roots[kMaxLoops];
     uint32_t rep_p = kNone, rep_q = kNone;  // depths of the two crossed edges of a loop met twice
     auto faces_distinct = [&](uint32_t depth) {
         uint32_t faces[2 * kMaxLoops];
-        for (uint32_t i = 0; i <= depth; ++i) faces[2 * i] = Mesh::face(path[2 * i]), faces[2 * i + 1] = mesh_.neighbor(path[2 * i]);
+        for (uint32_t i = 0; i <= depth; ++i)
+            faces[2 * i] = Mesh::face(HalfedgeId(path[2 * i])).idx(), faces[2 * i + 1] = mesh_.neighbor(HalfedgeId(path[2 * i])).idx();
         for (uint32_t i = 0; i < 2 * depth + 2; ++i)
             for (uint32_t j = 0; j < i; ++j)
                 if (faces[i] == faces[j]) return false;
@@ -92,7 +93,8 @@ bool MatchingBuilder::flip_alternating(uint32_t f1) {
         if (rep_p == kNone) return true;
         if (!faces_distinct(depth)) return false;
         const uint32_t up = path[2 * rep_p], uq = path[2 * rep_q];
-        return meets_first(mesh_.neighbor(up), Mesh::face(up), mesh_.neighbor(uq), Mesh::face(uq));
+        return meets_first(mesh_.neighbor(HalfedgeId(up)).idx(), Mesh::face(HalfedgeId(up)).idx(), mesh_.neighbor(HalfedgeId(uq)).idx(),
+                           Mesh::face(HalfedgeId(uq)).idx());
     };
     // Returns true once a cycle is flipped. `f` is the face at which a crossed edge is taken.
     auto search = [&](auto&& self, uint32_t f, uint32_t depth) -> bool {
@@ -108,23 +110,23 @@ bool MatchingBuilder::flip_alternating(uint32_t f1) {
         bool found = false;
         for (uint32_t h = 3 * f; h < 3 * f + 3 && !found; ++h) {
             if (!used_[h]) continue;
-            const uint32_t g = mesh_.neighbor(h);
+            const uint32_t g = mesh_.neighbor(HalfedgeId(h)).idx();
             uint32_t m = kNone;
             for (uint32_t e = 3 * g; e < 3 * g + 3; ++e)
                 if (matched_[e]) m = e;
             if (m == kNone || vlink_[g]) continue;
             path[2 * depth] = h;
             path[2 * depth + 1] = m;
-            if (g == close_face && mesh_.twin(m) == m1 && depth > 0 && closes_one_loop(depth)) {
+            if (g == close_face && mesh_.twin(HalfedgeId(m)).idx() == m1 && depth > 0 && closes_one_loop(depth)) {
                 for (uint32_t i = 0; i <= 2 * depth + 1; ++i) {
                     set_pair(used_, path[i], !used_[path[i]]);
                     set_pair(matched_, path[i], !matched_[path[i]]);
-                    flipped_faces_.push_back(Mesh::face(path[i]));
+                    flipped_faces_.push_back(face_of(path[i]));
                 }
                 for (uint32_t i = 1; i <= depth; ++i) uf_[find(roots[i])] = find(roots[0]);
                 found = true;
             } else if (depth + 1 < kMaxLoops && g != close_face) {
-                found = self(self, mesh_.neighbor(m), depth + 1);
+                found = self(self, mesh_.neighbor(HalfedgeId(m)).idx(), depth + 1);
             }
         }
         if (repeat) rep_p = rep_q = kNone;
@@ -145,7 +147,7 @@ void MatchingBuilder::reduce_loops() {
         todo.clear();
         for (uint32_t f : flipped_faces_)
             for (uint32_t h = 3 * f; h < 3 * f + 3; ++h)
-                for (uint32_t g : {f, mesh_.is_boundary(h) ? f : mesh_.neighbor(h)})
+                for (uint32_t g : {f, mesh_.is_boundary(HalfedgeId(h)) ? f : across(h)})
                     if (stamp[g] != pass) stamp[g] = pass, todo.push_back(g);
         flipped_faces_.clear();
         for (uint32_t f : todo) stats_.ring_flips += flip_alternating(f);
@@ -163,7 +165,7 @@ void MatchingBuilder::join(uint32_t h, uint32_t a, uint32_t b, bool cycle, bool 
 
 // Path end across h joins loop a for free: the loop opens at h's face (one crossed edge dropped).
 void MatchingBuilder::rotate_into(uint32_t h, uint32_t a, uint32_t b) {
-    const uint32_t f = Mesh::face(h);
+    const uint32_t f = Mesh::face(HalfedgeId(h)).idx();
     for (uint32_t k = 0; k < 3; ++k)
         if (used_[3 * f + k]) {
             set_pair(used_, 3 * f + k, 0);
@@ -176,7 +178,7 @@ void MatchingBuilder::rotate_into(uint32_t h, uint32_t a, uint32_t b) {
 // midpoint split of h: f_a-g_a and f_b-g_b become crossed, f's and g's outer edges stay as they
 // were. A loop joined to a loop stays a loop; to a path (g inside, at an end, or alone), a path.
 void MatchingBuilder::merge_by_split(uint32_t h, uint32_t a, uint32_t b) {
-    const uint32_t t = mesh_.twin(h);
+    const uint32_t t = mesh_.twin(HalfedgeId(h)).idx();
     split(h);
     set_pair(used_, h, 1);  // f_a - g_a
     set_pair(used_, t, 1);  // g_b - f_b
@@ -186,7 +188,7 @@ void MatchingBuilder::merge_by_split(uint32_t h, uint32_t a, uint32_t b) {
 }
 
 bool MatchingBuilder::try_merge(uint32_t h, bool allow_split) {
-    const uint32_t f = Mesh::face(h), g = mesh_.neighbor(h);
+    const uint32_t f = Mesh::face(HalfedgeId(h)).idx(), g = mesh_.neighbor(HalfedgeId(h)).idx();
     const uint32_t a = find(sid_[f]), b = find(sid_[g]);
     const bool fe = hdeg(f) < 2, ge = hdeg(g) < 2;
     if (a == b) {
@@ -197,10 +199,10 @@ bool MatchingBuilder::try_merge(uint32_t h, bool allow_split) {
     }
     if (fe && ge) return join(h, a, b, false, pinned_[a] || pinned_[b]), true;
     if (cycle_[a] && !pinned_[a] && ge) return rotate_into(h, a, b), true;
-    if (cycle_[b] && !pinned_[b] && fe) return rotate_into(mesh_.twin(h), b, a), true;
+    if (cycle_[b] && !pinned_[b] && fe) return rotate_into(mesh_.twin(HalfedgeId(h)).idx(), b, a), true;
     if (!allow_split || vlink_[f] || vlink_[g]) return false;
     if (cycle_[a] && !(pinned_[a] && !cycle_[b])) return merge_by_split(h, a, b), true;
-    if (cycle_[b] && !(pinned_[b] && !cycle_[a])) return merge_by_split(mesh_.twin(h), b, a), true;
+    if (cycle_[b] && !(pinned_[b] && !cycle_[a])) return merge_by_split(mesh_.twin(HalfedgeId(h)).idx(), b, a), true;
     return false;
 }
 
@@ -211,7 +213,7 @@ void MatchingBuilder::merge_all() {
             for (uint32_t k = 0; k < 3; ++k) {
                 const uint32_t h = 3 * f + k;
                 if (!passable(h) || used_[h]) continue;
-                if (find(sid_[f]) == find(sid_[mesh_.neighbor(h)]) && (cycle_[find(sid_[f])] || hdeg(f) == 2)) continue;
+                if (find(sid_[f]) == find(sid_[mesh_.neighbor(HalfedgeId(h)).idx()]) && (cycle_[find(sid_[f])] || hdeg(f) == 2)) continue;
                 if (try_merge(h, allow_split)) k = kNone;  // f's edges changed: look at all three again
             }
 }

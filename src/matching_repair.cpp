@@ -34,7 +34,7 @@ bool MatchingBuilder::augment_from(uint32_t u, std::vector<uint32_t>& stamp, uin
         for (uint32_t k = 0; k < 3; ++k) {
             const uint32_t h = 3 * x + k;
             if (!passable(h) || matched_[h]) continue;
-            const uint32_t y = mesh_.neighbor(h);
+            const uint32_t y = mesh_.neighbor(HalfedgeId(h)).idx();
             if (stamp[y] == mark) continue;
             stamp[y] = mark;
             if (quota_[y] > 0) {  // flip the path back to u
@@ -50,7 +50,7 @@ bool MatchingBuilder::augment_from(uint32_t u, std::vector<uint32_t>& stamp, uin
             for (uint32_t j = 0; j < 3; ++j) {
                 const uint32_t e = 3 * y + j;
                 if (!matched_[e]) continue;
-                const uint32_t z = mesh_.neighbor(e);
+                const uint32_t z = mesh_.neighbor(HalfedgeId(e)).idx();
                 if (stamp[z] == mark) continue;
                 stamp[z] = mark;
                 aug_prev_[z] = x;
@@ -98,7 +98,7 @@ bool MatchingBuilder::repair_ball(const std::vector<uint32_t>& short_faces, size
         for (size_t head = 0; head < queue.size() && queue.size() < ball; ++head)
             for (uint32_t h = 3 * queue[head]; h < 3 * queue[head] + 3; ++h) {
                 if (!passable(h)) continue;
-                const uint32_t g = mesh_.neighbor(h);
+                const uint32_t g = mesh_.neighbor(HalfedgeId(h)).idx();
                 if (local[g] == kNone) local[g] = 0, queue.push_back(g);
             }
         faces.insert(faces.end(), queue.begin(), queue.end());
@@ -115,7 +115,7 @@ bool MatchingBuilder::repair_ball(const std::vector<uint32_t>& short_faces, size
         if (local[f] == kNone) continue;
         bool inside = true;
         for (uint32_t h = 3 * f; h < 3 * f + 3; ++h)
-            if (matched_[h] && local[mesh_.neighbor(h)] == kNone) inside = false;
+            if (matched_[h] && local[mesh_.neighbor(HalfedgeId(h)).idx()] == kNone) inside = false;
         if (inside) kept.push_back(f);
     }
     for (uint32_t f : faces) local[f] = kNone;
@@ -134,12 +134,12 @@ bool MatchingBuilder::repair_ball(const std::vector<uint32_t>& short_faces, size
     auto free_copy = [&](uint32_t f) {
         for (uint32_t v = local[f]; v < local[f] + static_cast<uint32_t>(want(f)); ++v)
             if (mate[v] == null) return v;
-        return kNone;
+        return uint32_t{kNone};
     };
     for (uint32_t f : kept)
         for (uint32_t h = 3 * f; h < 3 * f + 3; ++h) {
             if (!passable(h)) continue;
-            const uint32_t g = mesh_.neighbor(h);
+            const uint32_t g = mesh_.neighbor(HalfedgeId(h)).idx();
             if (local[g] == kNone || local[g] <= local[f]) continue;
             for (int c = 0; c < want(f); ++c)
                 for (int d = 0; d < want(g); ++d) edges.emplace_back(local[f] + c, local[g] + d);
@@ -155,7 +155,7 @@ bool MatchingBuilder::repair_ball(const std::vector<uint32_t>& short_faces, size
         if (mate[v] == null || mate[v] < v) continue;
         const uint32_t f = owner[v], g = owner[mate[v]];
         for (uint32_t h = 3 * f; h < 3 * f + 3; ++h)
-            if (passable(h) && !matched_[h] && mesh_.neighbor(h) == g) {
+            if (passable(h) && !matched_[h] && mesh_.neighbor(HalfedgeId(h)).idx() == g) {
                 set_pair(matched_, h, 1);
                 break;
             }
@@ -222,12 +222,12 @@ bool MatchingBuilder::split_beside(uint32_t u) {
     uint32_t best = kNone;
     for (uint32_t h = 3 * u; h < 3 * u + 3; ++h) {
         if (!passable(h) || matched_[h]) continue;
-        const uint32_t g = mesh_.neighbor(h);
+        const uint32_t g = mesh_.neighbor(HalfedgeId(h)).idx();
         if (best == kNone || degree(g) == 3) best = h;
     }
     if (best == kNone) return false;
     const SplitResult sr = split(best);
-    for (uint32_t f : {sr.f_a, sr.f_b, sr.g_a, sr.g_b}) {
+    for (uint32_t f : {sr.f_a.idx(), sr.f_b.idx(), sr.g_a.idx(), sr.g_b.idx()}) {
         const int have = matched_[3 * f] + matched_[3 * f + 1] + matched_[3 * f + 2];
         quota_[f] = static_cast<uint8_t>(std::max(0, static_cast<int>(degree(f)) - (2 - vlink_[f]) - have));
     }
@@ -279,7 +279,7 @@ void MatchingBuilder::check_matching() const {
         int have = 0;
         for (uint32_t h = 3 * f; h < 3 * f + 3; ++h) {
             if (!matched_[h]) continue;
-            if (!passable(h) || !matched_[mesh_.twin(h)])
+            if (!passable(h) || !matched_[twin_of(h)])
                 throw InternalError("matching engine: face " + std::to_string(f) + " is matched across a closed or one-sided edge");
             ++have;
         }

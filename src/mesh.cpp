@@ -6,6 +6,7 @@
 #include <string>
 
 #include "singlestrip/errors.hpp"
+#include "soup_edges.hpp"
 
 namespace singlestrip {
 
@@ -24,96 +25,84 @@ Mesh Mesh::from_soup(const TriangleSoup& soup) {
         const Triangle& t = soup.triangles[f];
         for (int k = 0; k < 3; ++k) {
             if (t[k] >= soup.points.size())
-                throw InputError("face " + std::to_string(f) + " references vertex " + std::to_string(t[k]) +
-                                 " but there are only " + std::to_string(soup.points.size()) + " vertices");
+                throw InputError("face " + std::to_string(f) + " references vertex " + std::to_string(t[k]) + " but there are only " +
+                                 std::to_string(soup.points.size()) + " vertices");
             m.corner_vertex_[3 * f + k] = t[k];
         }
-        if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2])
-            throw InputError("face " + std::to_string(f) + " repeats a vertex");
+        if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) throw InputError("face " + std::to_string(f) + " repeats a vertex");
     }
-    // Pair half-edges: bucket them by their smaller endpoint (counting sort, O(V + F)), then
-    // sort each bucket by the larger endpoint (buckets hold a vertex's few edges).
-    const uint32_t nh = static_cast<uint32_t>(3 * nf);
-    const size_t nv = m.points_.size();
-    std::vector<uint32_t> start(nv + 1, 0);
-    for (uint32_t h = 0; h < nh; ++h) ++start[std::min(m.from(h), m.to(h)) + 1];
-    for (size_t v = 0; v < nv; ++v) start[v + 1] += start[v];
-    std::vector<uint32_t> order(nh);
-    {
-        std::vector<uint32_t> fill(start.begin(), start.end() - 1);
-        for (uint32_t h = 0; h < nh; ++h) order[fill[std::min(m.from(h), m.to(h))]++] = h;
-    }
-    auto other = [&](uint32_t h) { return std::max(m.from(h), m.to(h)); };
-    for (size_t v = 0; v < nv; ++v) {
-        const auto first = order.begin() + start[v], last = order.begin() + start[v + 1];
-        std::sort(first, last, [&](uint32_t x, uint32_t y) {
-            const uint32_t ox = other(x), oy = other(y);
-            return ox != oy ? ox < oy : x < y;
-        });
-    }
-    for (uint32_t i = 0; i < nh;) {
-        const uint32_t h0 = order[i];
-        const uint32_t lo = std::min(m.from(h0), m.to(h0)), hi = other(h0);
-        uint32_t j = i + 1;
-        while (j < nh && other(order[j]) == hi && std::min(m.from(order[j]), m.to(order[j])) == lo) ++j;
-        if (j - i > 2)
-            throw InputError("edge (" + std::to_string(m.from(h0)) + ", " + std::to_string(m.to(h0)) + ") has " +
-                             std::to_string(j - i) + " faces (non-manifold edge)");
-        if (j - i == 2) {
-            const uint32_t h1 = order[i + 1];
-            if (m.from(h0) == m.from(h1))
-                throw InputError("faces " + std::to_string(face(h0)) + " and " + std::to_string(face(h1)) +
-                                 " traverse edge (" + std::to_string(m.from(h0)) + ", " + std::to_string(m.to(h0)) +
-                                 ") in the same direction (inconsistent orientation)");
-            m.twin_[h0] = h1;
-            m.twin_[h1] = h0;
-        }
-        i = j;
-    }
-    // One outgoing half-edge per vertex; a boundary vertex gets its boundary half-edge, so the
-    // rotation h -> twin(prev(h)) from it sees the whole fan.
-    m.vertex_halfedge_.assign(m.points_.size(), kNone);
-    for (uint32_t h = 0; h < nh; ++h) {
-        uint32_t& vh = m.vertex_halfedge_[m.from(h)];
-        if (vh == kNone || m.twin_[h] == kNone) vh = h;
-    }
-    // Vertex manifoldness: each vertex's fan must contain all its corners.
-    std::vector<uint32_t> corners_at(m.points_.size(), 0);
-    for (uint32_t h = 0; h < nh; ++h) ++corners_at[m.from(h)];
-    for (uint32_t v = 0; v < m.points_.size(); ++v) {
-        const uint32_t h0 = m.vertex_halfedge_[v];
-        if (h0 == kNone) continue;
-        uint32_t count = 0;
-        uint32_t h = h0;
-        do {
-            ++count;
-            const uint32_t t = m.twin_[prev(h)];
-            if (t == kNone) break;
-            h = t;
-        } while (h != h0 && count <= corners_at[v]);
-        if (count != corners_at[v])
-            throw InputError("vertex " + std::to_string(v) + " is non-manifold (" + std::to_string(corners_at[v]) +
-                             " faces in more than one fan)");
-    }
+    m.pair_halfedges(SoupEdges(soup.triangles, soup.points.size()));
+    m.assign_vertex_halfedges();
+    m.check_vertex_fans();
     return m;
 }
 
-uint32_t Mesh::shared_halfedge(uint32_t f, uint32_t g) const noexcept {
+void Mesh::pair_halfedges(const SoupEdges& edges) {
+    edges.for_each_edge([&](uint32_t, uint32_t, auto first, auto last) {
+        const uint32_t h0 = *first;
+        const auto n = last - first;
+        if (n > 2)
+            throw InputError("edge (" + std::to_string(edges.from(h0)) + ", " + std::to_string(edges.to(h0)) + ") has " +
+                             std::to_string(n) + " faces (non-manifold edge)");
+        if (n < 2) return;
+        const uint32_t h1 = first[1];
+        if (edges.from(h0) == edges.from(h1))
+            throw InputError("faces " + std::to_string(h0 / 3) + " and " + std::to_string(h1 / 3) + " traverse edge (" +
+                             std::to_string(edges.from(h0)) + ", " + std::to_string(edges.to(h0)) +
+                             ") in the same direction (inconsistent orientation)");
+        twin_[h0] = h1;
+        twin_[h1] = h0;
+    });
+}
+
+// One outgoing half-edge per vertex; a boundary vertex gets its boundary half-edge, so the
+// rotation h -> twin(prev(h)) from it sees the whole fan.
+void Mesh::assign_vertex_halfedges() {
+    vertex_halfedge_.assign(points_.size(), kNone);
+    for (uint32_t h = 0; h < twin_.size(); ++h) {
+        uint32_t& vh = vertex_halfedge_[corner_vertex_[h]];
+        if (vh == kNone || twin_[h] == kNone) vh = h;
+    }
+}
+
+// Vertex manifoldness: each vertex's fan must contain all its corners.
+void Mesh::check_vertex_fans() const {
+    std::vector<uint32_t> corners_at(points_.size(), 0);
+    for (const uint32_t v : corner_vertex_) ++corners_at[v];
+    for (const VertexId v : vertices()) {
+        const HalfedgeId h0 = vertex_halfedge(v);
+        if (!h0.valid()) continue;
+        uint32_t count = 0;
+        HalfedgeId h = h0;
+        do {
+            ++count;
+            const HalfedgeId t = twin(prev(h));
+            if (!t.valid()) break;
+            h = t;
+        } while (h != h0 && count <= corners_at[v.idx()]);
+        if (count != corners_at[v.idx()])
+            throw InputError("vertex " + std::to_string(v.idx()) + " is non-manifold (" + std::to_string(corners_at[v.idx()]) +
+                             " faces in more than one fan)");
+    }
+}
+
+HalfedgeId Mesh::shared_halfedge(FaceId f, FaceId g) const noexcept {
     for (uint32_t k = 0; k < 3; ++k) {
-        const uint32_t h = 3 * f + k;
-        if (twin_[h] != kNone && twin_[h] / 3 == g) return h;
+        const HalfedgeId h = halfedge(f, k);
+        if (neighbor(h) == g && g.valid()) return h;
     }
     return kNone;
 }
 
-SplitResult Mesh::split_edge(uint32_t h) {
-    if (h >= twin_.size() || twin_[h] == kNone)
-        throw InternalError("split_edge: half-edge " + std::to_string(h) + " is not an interior edge");
-    const uint32_t t = twin_[h];
-    const uint32_t f = face(h), g = face(t);
-    const uint32_t a = from(h), b = to(h), c = opposite(h), d = opposite(t);
-    const uint32_t hn = next(h);  // b->c in f (prev(h), c->a, stays)
-    const uint32_t tn = next(t);  // a->d in g (prev(t), d->b, stays)
+SplitResult Mesh::split_edge(HalfedgeId he) {
+    if (he.idx() >= twin_.size() || is_boundary(he))
+        throw InternalError("split_edge: half-edge " + std::to_string(he.idx()) + " is not an interior edge");
+    // The corner table's own arrays, indexed directly.
+    const uint32_t h = he.idx(), t = twin_[h];
+    const uint32_t f = h / 3, g = t / 3;
+    const uint32_t a = corner_vertex_[h], b = to(he).idx(), c = opposite(he).idx(), d = opposite(HalfedgeId(t)).idx();
+    const uint32_t hn = next(he).idx();             // b->c in f (prev(h), c->a, stays)
+    const uint32_t tn = next(HalfedgeId(t)).idx();  // a->d in g (prev(t), d->b, stays)
     const uint32_t twin_bc = twin_[hn], twin_ad = twin_[tn];
 
     const auto& pa = points_[a];
@@ -149,7 +138,7 @@ SplitResult Mesh::split_edge(uint32_t h) {
     if (vertex_halfedge_[b] == hn) vertex_halfedge_[b] = fb0 + 1;
     if (vertex_halfedge_[a] == tn) vertex_halfedge_[a] = ga0 + 1;
     vertex_halfedge_[mid] = fb0 + 0;
-    return SplitResult{mid, f, fb, ga, g};
+    return SplitResult{VertexId(mid), FaceId(f), FaceId(fb), FaceId(ga), FaceId(g)};
 }
 
 uint32_t Mesh::num_referenced_vertices() const {
@@ -179,9 +168,9 @@ uint32_t Mesh::num_boundary_loops() const {
         uint32_t h = h0;
         while (!seen[h]) {
             seen[h] = 1;
-            uint32_t n = next(h);
-            while (twin_[n] != kNone) n = next(twin_[n]);
-            h = n;
+            HalfedgeId n = next(HalfedgeId(h));
+            while (!is_boundary(n)) n = next(twin(n));
+            h = n.idx();
         }
     }
     return loops;
@@ -189,19 +178,19 @@ uint32_t Mesh::num_boundary_loops() const {
 
 std::vector<uint32_t> Mesh::component_of_faces() const {
     std::vector<uint32_t> comp(num_faces(), kNone);
-    std::vector<uint32_t> stack;
+    std::vector<FaceId> stack;
     uint32_t id = 0;
-    for (uint32_t f0 = 0; f0 < num_faces(); ++f0) {
-        if (comp[f0] != kNone) continue;
-        comp[f0] = id;
+    for (const FaceId f0 : faces()) {
+        if (comp[f0.idx()] != kNone) continue;
+        comp[f0.idx()] = id;
         stack.push_back(f0);
         while (!stack.empty()) {
-            const uint32_t f = stack.back();
+            const FaceId f = stack.back();
             stack.pop_back();
             for (uint32_t k = 0; k < 3; ++k) {
-                const uint32_t g = neighbor(3 * f + k);
-                if (g != kNone && comp[g] == kNone) {
-                    comp[g] = id;
+                const FaceId g = neighbor(halfedge(f, k));
+                if (g.valid() && comp[g.idx()] == kNone) {
+                    comp[g.idx()] = id;
                     stack.push_back(g);
                 }
             }
@@ -243,7 +232,8 @@ void Mesh::validate() const {
         ++corners_at[corner_vertex_[h]];
         const uint32_t t = twin_[h];
         if (t == kNone) continue;
-        if (t >= twin_.size() || twin_[t] != h || face(t) == face(h) || from(t) != to(h) || to(t) != from(h))
+        const HalfedgeId ht(h), tt(t);
+        if (t >= twin_.size() || twin_[t] != h || face(tt) == face(ht) || from(tt) != to(ht) || to(tt) != from(ht))
             fail("I3 half-edge " + std::to_string(h) + " twin");
     }
     for (uint32_t v = 0; v < points_.size(); ++v) {
@@ -252,13 +242,13 @@ void Mesh::validate() const {
             if (corners_at[v] != 0) fail("I4 vertex " + std::to_string(v) + " has faces but no half-edge");
             continue;
         }
-        if (h0 >= twin_.size() || from(h0) != v) fail("I4 vertex " + std::to_string(v) + " half-edge");
+        if (h0 >= twin_.size() || corner_vertex_[h0] != v) fail("I4 vertex " + std::to_string(v) + " half-edge");
         // Walk both ways around v; together the walks must see every corner exactly once.
         uint32_t count = 1;
         uint32_t h = h0;
         bool closed = false;
         while (count <= corners_at[v]) {
-            const uint32_t t = twin_[prev(h)];
+            const uint32_t t = twin_[prev(HalfedgeId(h)).idx()];
             if (t == kNone) break;
             if (t == h0) {
                 closed = true;
@@ -270,7 +260,7 @@ void Mesh::validate() const {
         if (!closed) {
             h = h0;
             while (count <= corners_at[v] && twin_[h] != kNone) {
-                h = next(twin_[h]);
+                h = next(HalfedgeId(twin_[h])).idx();
                 ++count;
             }
         }

@@ -34,15 +34,15 @@ void enter(PipelineStage* stage, PipelineStage s) {
 }
 
 void append_constraint_file(const std::string& path, uint32_t index_base, const TriangleSoup& soup, StripOptions& strip) {
-    std::vector<uint32_t> lines;
-    const auto pairs = read_constraints_based(path, static_cast<uint32_t>(soup.points.size()), index_base, &lines);
+    const std::vector<ConstraintEdge> edges = read_constraints_based(path, static_cast<uint32_t>(soup.points.size()), index_base);
     try {
-        check_constraint_edges(path, pairs, lines, soup);
+        check_constraint_edges(path, edges, soup);
     } catch (const RequestError& e) {
         if (index_base == 0) throw;
         // The check names the pair 0-based; say so rather than show numbers the file lacks.
         throw RequestError(std::string(e.what()) + " (vertex numbers counted from 0 here: add 1 for the file's numbering)");
     }
+    const auto pairs = vertex_pairs(edges);
     strip.constraint_edges.insert(strip.constraint_edges.end(), pairs.begin(), pairs.end());
 }
 

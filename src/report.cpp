@@ -19,9 +19,9 @@ json options_json(const PipelineOptions& o) {
     j["weld"] = o.weld;
     j["join"] = join_mode_name(o.join);
     if (o.join == JoinMode::Restart) j["restart_index"] = o.restart_index;
-    if (o.strip.seed_face) j["seed_face"] = *o.strip.seed_face;
-    if (o.strip.source) j["source"] = *o.strip.source;
-    if (o.strip.target) j["target"] = *o.strip.target;
+    if (o.strip.seed_face) j["seed_face"] = o.strip.seed_face->idx();
+    if (o.strip.source) j["source"] = o.strip.source->idx();
+    if (o.strip.target) j["target"] = o.strip.target->idx();
     return j;
 }
 

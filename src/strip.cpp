@@ -24,8 +24,6 @@ namespace singlestrip {
 
 namespace {
 
-constexpr uint32_t kNoRegion = kNone;
-
 class Builder {
 public:
     Builder(Mesh mesh, const StripOptions& options) : mesh_(std::move(mesh)), opt_(options) {}
@@ -71,12 +69,12 @@ private:
     uint32_t searched_ = kNone;  ///< the face whose islands side_ holds
     std::vector<uint32_t> scratch_;
 
-    [[nodiscard]] bool passable(uint32_t h) const { return !mesh_.is_boundary(h) && !blocked_[h]; }
+    [[nodiscard]] bool passable(uint32_t h) const { return !mesh_.is_boundary(HalfedgeId(h)) && !blocked_[h]; }
     [[nodiscard]] bool in_region(uint32_t f, uint32_t r) const { return f != kNone && !striped_[f] && region_[f] == r; }
     /// Face across h if it is an unstriped face of region r, else kNone.
     [[nodiscard]] uint32_t open_neighbor(uint32_t h, uint32_t r) const {
         if (!passable(h)) return kNone;
-        const uint32_t g = mesh_.neighbor(h);
+        const uint32_t g = mesh_.neighbor(HalfedgeId(h)).idx();
         return in_region(g, r) ? g : kNone;
     }
     [[nodiscard]] uint32_t count_open(uint32_t f, uint32_t r) const {
@@ -110,8 +108,10 @@ private:
         return c;
     }
     bool fan_connects(uint32_t n, uint32_t ha, uint32_t hb, uint32_t r) const;
-    static constexpr int kMeet = -1, kOverBudget = 2;
-    int bidirectional_search(uint32_t n, uint32_t a, uint32_t b, uint32_t r, size_t budget = SIZE_MAX);
+    /// How bidirectional_search() ended: the two sides met, or side A (of `a`) or B ran out of
+    /// faces first, or the budget ran out.
+    enum class Search : uint8_t { SideA, SideB, Met, OverBudget };
+    Search bidirectional_search(uint32_t n, uint32_t a, uint32_t b, uint32_t r, size_t budget = SIZE_MAX);
 
     void grow(uint32_t cursor, uint32_t region, uint32_t dest);
     uint32_t take_bridge(uint32_t cursor, uint32_t n, uint32_t region, uint32_t dest, const Classification& c);
@@ -138,7 +138,7 @@ private:
 void Builder::grow_arrays() {
     const uint32_t nf = mesh_.num_faces();
     striped_.resize(nf, 0);
-    region_.resize(nf, kNoRegion);
+    region_.resize(nf, kNone);
     next_.resize(nf, kNone);
     prev_.resize(nf, kNone);
     stamp_.resize(nf, 0);
@@ -157,19 +157,19 @@ long long Builder::chi_of(const std::vector<uint32_t>& faces, uint32_t r) {
         for (uint32_t k = 0; k < 3; ++k) {
             const uint32_t h = 3 * f + k;
             inner_halfedges += open_neighbor(h, r) != kNone;
-            const uint32_t v = mesh_.from(h);
+            const uint32_t v = mesh_.from(HalfedgeId(h)).idx();
             if (vstamp_[v] == vstamp_base_) continue;
             vstamp_[v] = vstamp_base_;
             // Interior: rotating around v never leaves the region nor crosses a blocked edge.
             uint32_t g = h;
             bool interior = true;
             do {
-                const uint32_t e = Mesh::prev(g);
-                if (!passable(e) || !in_region(Mesh::face(g), r)) {
+                const uint32_t e = Mesh::prev(HalfedgeId(g)).idx();
+                if (!passable(e) || !in_region(Mesh::face(HalfedgeId(g)).idx(), r)) {
                     interior = false;
                     break;
                 }
-                g = mesh_.twin(e);
+                g = mesh_.twin(HalfedgeId(e)).idx();
             } while (g != h);
             interior_vertices += interior;
         }
@@ -215,16 +215,17 @@ void Builder::take(uint32_t cursor, uint32_t f) {
 // b, starting at a and moving away from N, through open faces of r. Reaching b proves a and b
 // stay connected without N.
 bool Builder::fan_connects(uint32_t n, uint32_t ha, uint32_t hb, uint32_t r) const {
-    const uint32_t v = mesh_.from(ha) == mesh_.to(hb) ? mesh_.from(ha) : mesh_.to(ha);
-    const uint32_t b = mesh_.neighbor(hb);
-    uint32_t g = mesh_.twin(ha);  // in face a, incident to v
+    const uint32_t v = mesh_.from(HalfedgeId(ha)).idx() == mesh_.to(HalfedgeId(hb)).idx() ? mesh_.from(HalfedgeId(ha)).idx()
+                                                                                          : mesh_.to(HalfedgeId(ha)).idx();
+    const uint32_t b = mesh_.neighbor(HalfedgeId(hb)).idx();
+    uint32_t g = mesh_.twin(HalfedgeId(ha)).idx();  // in face a, incident to v
     // No cap on the degree: a cap answered "not connected" around a vertex of valence > 4096 and
     // a closed cone then failed with "fundamental triangle in a region without cycles".
     for (uint32_t guard = 0; guard <= mesh_.num_halfedges(); ++guard) {
-        const uint32_t other = mesh_.from(g) == v ? Mesh::prev(g) : Mesh::next(g);
+        const uint32_t other = mesh_.from(HalfedgeId(g)).idx() == v ? Mesh::prev(HalfedgeId(g)).idx() : Mesh::next(HalfedgeId(g)).idx();
         if (!passable(other)) return false;
-        g = mesh_.twin(other);
-        const uint32_t f = Mesh::face(g);
+        g = mesh_.twin(HalfedgeId(other)).idx();
+        const uint32_t f = Mesh::face(HalfedgeId(g)).idx();
         if (f == b) return true;
         if (f == n || !in_region(f, r)) return false;
     }
@@ -232,9 +233,9 @@ bool Builder::fan_connects(uint32_t n, uint32_t ha, uint32_t hb, uint32_t r) con
 }
 
 // Alternating search from a and from b through open faces of r, never entering n.
-// Returns -1 if they meet (connected), else the side (0 = a, 1 = b) that ran out first; that
-// side's faces are then in side_[s]. Cost O(size of the smaller island) when they are separated.
-int Builder::bidirectional_search(uint32_t n, uint32_t a, uint32_t b, uint32_t r, size_t budget) {
+// Met if they meet (connected), else the side (A = a, B = b) that ran out first; that side's faces
+// are then in side_[0] or side_[1]. Cost O(size of the smaller island) when they are separated.
+Builder::Search Builder::bidirectional_search(uint32_t n, uint32_t a, uint32_t b, uint32_t r, size_t budget) {
     stamp_base_ += 2;
     if (stamp_base_ >= 0xfffffff0u) {
         std::fill(stamp_.begin(), stamp_.end(), 0);
@@ -252,12 +253,12 @@ int Builder::bidirectional_search(uint32_t n, uint32_t a, uint32_t b, uint32_t r
     for (;;) {
         if (head[0] + head[1] > budget) {
             stamp_[n] = 0;
-            return kOverBudget;
+            return Search::OverBudget;
         }
         for (int s = 0; s < 2; ++s) {
             if (head[s] == side_[s].size()) {
                 stamp_[n] = 0;
-                return s;
+                return s == 0 ? Search::SideA : Search::SideB;
             }
             const uint32_t f = side_[s][head[s]++];
             for (uint32_t k = 0; k < 3; ++k) {
@@ -266,7 +267,7 @@ int Builder::bidirectional_search(uint32_t n, uint32_t a, uint32_t b, uint32_t r
                 if (stamp_[g] == mark[s]) continue;
                 if (stamp_[g] == mark[1 - s]) {
                     stamp_[n] = 0;
-                    return -1;
+                    return Search::Met;
                 }
                 stamp_[g] = mark[s];
                 side_[s].push_back(g);
@@ -302,10 +303,10 @@ Builder::Classification Builder::classify_local(uint32_t n, uint32_t from, uint3
 // (faces visited) it may return false: still Unknown.
 bool Builder::resolve(Classification& c, uint32_t n, uint32_t r, size_t budget) {
     if (c.kind == Kind::Safe || (c.kind == Kind::Bridge && c.small_side != kNone && searched_ == n)) return true;
-    const int s = bidirectional_search(n, c.a, c.b, r, budget);
+    const Search s = bidirectional_search(n, c.a, c.b, r, budget);
     searched_ = n;
-    if (s == kOverBudget) return false;
-    if (s == kMeet) {
+    if (s == Search::OverBudget) return false;
+    if (s == Search::Met) {
         // A split candidate that is not a bridge (§3.1). Impossible in a disk.
         if (region_beta_[r] <= 0)
             throw InternalError("strip builder: fundamental triangle in a region without cycles (topology tracking broken)");
@@ -314,7 +315,7 @@ bool Builder::resolve(Classification& c, uint32_t n, uint32_t r, size_t budget) 
         return true;
     }
     c.kind = Kind::Bridge;
-    c.small_side = static_cast<uint32_t>(s);
+    c.small_side = s == Search::SideA ? 0 : 1;
     return true;
 }
 
@@ -333,16 +334,16 @@ void Builder::defer(uint32_t region, uint32_t anchor) {
 // Splits the edge of h at its midpoint, keeping the per-face and per-half-edge state in step.
 SplitResult Builder::split_at(uint32_t h) {
     // Constraint flags of the two half-edges that split_edge moves into new faces.
-    const uint32_t moved_f = Mesh::next(h), moved_g = Mesh::next(mesh_.twin(h));
+    const uint32_t moved_f = Mesh::next(HalfedgeId(h)).idx(), moved_g = Mesh::next(mesh_.twin(HalfedgeId(h))).idx();
     const uint8_t blocked_f = blocked_[moved_f], blocked_g = blocked_[moved_g];
-    const SplitResult s = mesh_.split_edge(h);
+    const SplitResult s = mesh_.split_edge(HalfedgeId(h));
     ++stats_.splits;
     check_split_budget();
     grow_arrays();
     blocked_[moved_f] = 0;
     blocked_[moved_g] = 0;
-    blocked_[3 * s.f_b + 1] = blocked_f;
-    blocked_[3 * s.g_a + 1] = blocked_g;
+    blocked_[3 * s.f_b.idx() + 1] = blocked_f;
+    blocked_[3 * s.g_a.idx() + 1] = blocked_g;
     if (opt_.validate_each_split) mesh_.validate();
     return s;
 }
@@ -384,12 +385,12 @@ void Builder::grow(uint32_t cursor, uint32_t region, uint32_t dest) {
                 if (c.kind == Kind::Bridge) {
                     const uint32_t large_he = c.small_side == 0 ? c.hb : c.ha;
                     const uint32_t large = take_bridge(t, dest, region, kNone, c);
-                    defer(large, mesh_.twin(large_he));
+                    defer(large, mesh_.twin(HalfedgeId(large_he)).idx());
                     return;
                 }
                 if (c.fundamental) note_fundamental(dest, region);
                 take(t, dest);
-                defer(region, mesh_.twin(c.ha));
+                defer(region, mesh_.twin(HalfedgeId(c.ha)).idx());
                 return;
             }
             throw InternalError("strip builder: strip stuck with " + std::to_string(region_size_[region]) +
@@ -397,9 +398,9 @@ void Builder::grow(uint32_t cursor, uint32_t region, uint32_t dest) {
         }
         // Turn of each candidate relative to the in-edge of t.
         const uint32_t pv = prev_[t];
-        const uint32_t hin = pv == kNone ? kNone : mesh_.shared_halfedge(t, pv);
+        const uint32_t hin = pv == kNone ? kNone : mesh_.shared_halfedge(FaceId(t), FaceId(pv)).idx();
         int turn[3] = {0, 0, 0};
-        for (uint32_t i = 0; i < nc; ++i) turn[i] = hin == kNone ? 0 : (hc[i] == Mesh::next(hin) ? +1 : -1);
+        for (uint32_t i = 0; i < nc; ++i) turn[i] = hin == kNone ? 0 : (hc[i] == Mesh::next(HalfedgeId(hin)).idx() ? +1 : -1);
         // Order: greedy = fewer open neighbours first (Warnsdorff), ties alternate the turn;
         // paper = keep the same turn direction as before.
         uint32_t idx[3] = {0, 1, 2};
@@ -483,10 +484,10 @@ uint32_t Builder::take_bridge(uint32_t cursor, uint32_t n, uint32_t region, uint
         dest_in_small |= f == dest;
     }
     if (dest_in_small) {
-        defer(region, mesh_.twin(large_he));
+        defer(region, mesh_.twin(HalfedgeId(large_he)).idx());
         return r_small;
     }
-    defer(r_small, mesh_.twin(small_he));
+    defer(r_small, mesh_.twin(HalfedgeId(small_he)).idx());
     return region;
 }
 
@@ -509,10 +510,10 @@ void Builder::absorb(uint32_t record) {
     d.done = true;
     const uint32_t region = d.region;
     const uint32_t ha = d.anchor;  // in the anchor face
-    const uint32_t hh = mesh_.twin(ha);
+    const uint32_t hh = mesh_.twin(HalfedgeId(ha)).idx();
     if (hh == kNone) throw InternalError("strip builder: deferred region lost its host");
-    const uint32_t host = Mesh::face(hh);
-    const uint32_t anchor = Mesh::face(ha);
+    const uint32_t host = Mesh::face(HalfedgeId(hh)).idx();
+    const uint32_t anchor = Mesh::face(HalfedgeId(ha)).idx();
     if (!striped_[host] || !in_region(anchor, region))
         throw InternalError("strip builder: deferred region " + std::to_string(region) + " has a bad anchor");
     if (try_detour(region, anchor)) return;
@@ -523,27 +524,27 @@ void Builder::absorb(uint32_t record) {
     }
     const uint32_t p = prev_[host], n = next_[host];
     const SplitResult s = split_at(hh);
-    striped_[s.f_b] = 1;
-    region_[s.f_b] = kNoRegion;
-    fundamental_[s.f_b] = fundamental_[host];
-    time_[s.f_b] = time_[host];
-    region_[s.g_a] = region;
+    striped_[s.f_b.idx()] = 1;
+    region_[s.f_b.idx()] = kNone;
+    fundamental_[s.f_b.idx()] = fundamental_[host];
+    time_[s.f_b.idx()] = time_[host];
+    region_[s.g_a.idx()] = region;
     ++region_size_[region];
     // c0 keeps the host's in-edge, c1 its out-edge; a0 is the anchor child beside c0.
     bool fa_first;
     if (p != kNone)
-        fa_first = mesh_.shared_halfedge(s.f_a, p) != kNone;
+        fa_first = mesh_.shared_halfedge(s.f_a, FaceId(p)).idx() != kNone;
     else if (n != kNone)
-        fa_first = mesh_.shared_halfedge(s.f_a, n) == kNone;
+        fa_first = mesh_.shared_halfedge(s.f_a, FaceId(n)).idx() == kNone;
     else
-        fa_first = source_ == kNone || has_vertex(s.f_a, source_);
-    const uint32_t c0 = fa_first ? s.f_a : s.f_b, c1 = fa_first ? s.f_b : s.f_a;
-    const uint32_t a0 = fa_first ? s.g_a : s.g_b, a1 = fa_first ? s.g_b : s.g_a;
+        fa_first = source_ == kNone || has_vertex(s.f_a.idx(), source_);
+    const uint32_t c0 = fa_first ? s.f_a.idx() : s.f_b.idx(), c1 = fa_first ? s.f_b.idx() : s.f_a.idx();
+    const uint32_t a0 = fa_first ? s.g_a.idx() : s.g_b.idx(), a1 = fa_first ? s.g_b.idx() : s.g_a.idx();
     // Host slot (index f_a) becomes c0 -> c1.
     if (fa_first)
-        insert_after(s.f_a, s.f_b);
+        insert_after(s.f_a.idx(), s.f_b.idx());
     else
-        insert_after(p, s.f_b);  // p == kNone inserts at the head
+        insert_after(p, s.f_b.idx());  // p == kNone inserts at the head
     // Normally the region goes between the children: c0 -> a0 ... a1 -> c1. At the ends of the
     // strip the region may instead go first (a1 ... a0 -> c0 -> c1) or last (c0 -> c1 -> a1 ... a0)
     // so that the first face keeps the source vertex and the last face the target (§5.2).
@@ -587,14 +588,14 @@ bool Builder::try_detour(uint32_t region, uint32_t anchor) {
         for (uint32_t k = 0; k < 3; ++k) {
             const uint32_t h = 3 * r1 + k;
             if (!passable(h)) continue;
-            const uint32_t x = mesh_.neighbor(h);
+            const uint32_t x = mesh_.neighbor(HalfedgeId(h)).idx();
             if (!striped_[x]) continue;
             const uint32_t y = next_[x];
             if (y == kNone) continue;
             for (uint32_t j = 0; j < 3; ++j) {
                 const uint32_t hy = 3 * y + j;
                 if (!passable(hy)) continue;
-                const uint32_t r2 = mesh_.neighbor(hy);
+                const uint32_t r2 = mesh_.neighbor(HalfedgeId(hy)).idx();
                 if (!in_region(r2, region) || (r2 == r1) != single) continue;
                 ++stats_.detours;
                 const uint32_t r = take_forced(x, r1, region, single ? kNone : r2);
@@ -610,11 +611,11 @@ bool Builder::absorb_at_tail() {
     for (uint32_t k = 0; k < 3; ++k) {
         const uint32_t h = 3 * tail_ + k;
         if (!passable(h)) continue;
-        const uint32_t g = mesh_.neighbor(h);
+        const uint32_t g = mesh_.neighbor(HalfedgeId(h)).idx();
         if (striped_[g]) continue;
         const uint32_t rec = deferred_of_region_[region_[g]];
         if (rec == kNone || deferred_[rec].done) continue;
-        deferred_[rec].anchor = mesh_.twin(h);
+        deferred_[rec].anchor = mesh_.twin(HalfedgeId(h)).idx();
         absorb(rec);
         return true;
     }
@@ -623,7 +624,7 @@ bool Builder::absorb_at_tail() {
 
 uint32_t Builder::choose_seed() const {
     const uint32_t nf = mesh_.num_faces();
-    if (opt_.seed_face) return *opt_.seed_face;
+    if (opt_.seed_face) return opt_.seed_face->idx();
     // Prefer a face with two blocked sides (it has one open neighbour: always safe), then one
     // with one blocked side whose opposite vertex is interior, then any face with a blocked side.
     uint32_t best = 0;
@@ -645,21 +646,21 @@ uint32_t Builder::choose_seed() const {
 // true). Rotates both ways from v's half-edge, since the fan may be open. O(degree of v).
 template <class Fn>
 bool Builder::for_each_outgoing(uint32_t v, Fn&& fn) const {
-    const uint32_t h0 = mesh_.vertex_halfedge(v);
+    const uint32_t h0 = mesh_.vertex_halfedge(VertexId(v)).idx();
     if (h0 == kNone) return false;
     uint32_t h = h0;
     for (uint32_t guard = 0; guard <= mesh_.num_halfedges(); ++guard) {
         if (fn(h)) return true;
-        const uint32_t t = mesh_.twin(Mesh::prev(h));
+        const uint32_t t = mesh_.twin(Mesh::prev(HalfedgeId(h))).idx();
         if (t == kNone) break;
         if (t == h0) return false;  // closed fan: every half-edge seen
         h = t;
     }
     h = h0;
     for (uint32_t guard = 0; guard <= mesh_.num_halfedges(); ++guard) {
-        const uint32_t t = mesh_.twin(h);
+        const uint32_t t = mesh_.twin(HalfedgeId(h)).idx();
         if (t == kNone) break;
-        h = Mesh::next(t);
+        h = Mesh::next(HalfedgeId(t)).idx();
         if (h == h0) break;
         if (fn(h)) return true;
     }
@@ -671,10 +672,10 @@ uint32_t Builder::find_edge(uint32_t u, uint32_t v) const {
     if (u >= mesh_.num_vertices() || v >= mesh_.num_vertices()) return kNone;
     uint32_t found = kNone;
     for_each_outgoing(u, [&](uint32_t h) {
-        if (mesh_.to(h) == v)
+        if (mesh_.to(HalfedgeId(h)).idx() == v)
             found = h;
-        else if (mesh_.from(Mesh::prev(h)) == v)
-            found = Mesh::prev(h);
+        else if (mesh_.from(Mesh::prev(HalfedgeId(h))).idx() == v)
+            found = Mesh::prev(HalfedgeId(h)).idx();
         return found != kNone;
     });
     return found;
@@ -688,7 +689,7 @@ void Builder::apply_constraints() {
             throw RequestError("constraint " + std::to_string(index) + ": (" + std::to_string(u) + ", " + std::to_string(v) +
                                ") is not an edge of the mesh");
         blocked_[h] = 1;
-        if (mesh_.twin(h) != kNone) blocked_[mesh_.twin(h)] = 1;
+        if (mesh_.twin(HalfedgeId(h)).idx() != kNone) blocked_[mesh_.twin(HalfedgeId(h)).idx()] = 1;
         ++index;
     }
     if (opt_.constraint_edges.empty()) return;
@@ -709,7 +710,7 @@ void Builder::apply_constraints() {
             for (uint32_t k = 0; k < 3; ++k) {
                 const uint32_t h = 3 * f + k;
                 if (!passable(h)) continue;
-                const uint32_t g = mesh_.neighbor(h);
+                const uint32_t g = mesh_.neighbor(HalfedgeId(h)).idx();
                 if (piece[g] == kNone) {
                     piece[g] = id;
                     stack.push_back(g);
@@ -733,7 +734,7 @@ uint32_t Builder::face_at_vertex(uint32_t v, uint32_t avoid) const {
     uint32_t best = kNone;
     int best_score = -1;
     for_each_outgoing(v, [&](uint32_t h) {
-        const uint32_t f = Mesh::face(h);
+        const uint32_t f = Mesh::face(HalfedgeId(h)).idx();
         int score = 0;
         for (uint32_t k = 0; k < 3; ++k) score += !passable(3 * f + k);
         if (f == avoid) score = -1;
@@ -749,50 +750,52 @@ uint32_t Builder::face_at_vertex(uint32_t v, uint32_t avoid) const {
 StripResult Builder::run() {
     const uint32_t nf = mesh_.num_faces();
     if (nf == 0) throw InputError("mesh has no faces");
-    if (opt_.seed_face && *opt_.seed_face >= nf)
-        throw RequestError("seed face " + std::to_string(*opt_.seed_face) + " is out of range (mesh has " + std::to_string(nf) + " faces)");
+    if (opt_.seed_face && opt_.seed_face->idx() >= nf)
+        throw RequestError("seed face " + std::to_string(opt_.seed_face->idx()) + " is out of range (mesh has " + std::to_string(nf) +
+                           " faces)");
     auto check_vertex = [&](const char* what, uint32_t v) {
         if (v >= mesh_.num_input_vertices())
             throw RequestError(std::string(what) + " vertex " + std::to_string(v) + " is out of range (mesh has " +
                                std::to_string(mesh_.num_input_vertices()) + " vertices)");
-        if (mesh_.vertex_halfedge(v) == kNone)
+        if (mesh_.vertex_halfedge(VertexId(v)).idx() == kNone)
             throw RequestError(std::string(what) + " vertex " + std::to_string(v) + " is not used by any face");
     };
-    if (opt_.source) check_vertex("source", *opt_.source);
-    if (opt_.target) check_vertex("target", *opt_.target);
+    if (opt_.source) check_vertex("source", opt_.source->idx());
+    if (opt_.target) check_vertex("target", opt_.target->idx());
     if (opt_.seed_face && opt_.source) {
-        const uint32_t f = *opt_.seed_face;
+        const uint32_t f = opt_.seed_face->idx();
         const auto& cv = mesh_.corner_vertices();
-        if (cv[3 * f] != *opt_.source && cv[3 * f + 1] != *opt_.source && cv[3 * f + 2] != *opt_.source)
-            throw RequestError("seed face " + std::to_string(f) + " is not incident to source vertex " + std::to_string(*opt_.source));
+        if (cv[3 * f] != opt_.source->idx() && cv[3 * f + 1] != opt_.source->idx() && cv[3 * f + 2] != opt_.source->idx())
+            throw RequestError("seed face " + std::to_string(f) + " is not incident to source vertex " +
+                               std::to_string(opt_.source->idx()));
     }
     grow_arrays();
     apply_constraints();
     stats_.input_triangles = nf;
     stats_.boundary_loops = mesh_.num_boundary_loops();
     stats_.genus = mesh_.genus();
-    source_ = opt_.source ? *opt_.source : kNone;
-    target_ = opt_.target ? *opt_.target : kNone;
+    source_ = opt_.source ? opt_.source->idx() : kNone;
+    target_ = opt_.target ? opt_.target->idx() : kNone;
 
     const uint32_t r0 = new_region(nf);
     std::fill(region_.begin(), region_.end(), r0);
-    uint32_t seed = opt_.seed_face ? *opt_.seed_face : opt_.source ? face_at_vertex(*opt_.source, kNone) : choose_seed();
+    uint32_t seed = opt_.seed_face ? opt_.seed_face->idx() : opt_.source ? face_at_vertex(opt_.source->idx(), kNone) : choose_seed();
     uint32_t dest = kNone;
     if (opt_.target) {
-        dest = face_at_vertex(*opt_.target, seed);
+        dest = face_at_vertex(opt_.target->idx(), seed);
         if (dest == seed && nf > 1) {
             // The target's only face is the first face: split it across the edge opposite the
             // target so that both children touch the target; start in one, end in the other.
             uint32_t h = 3 * seed;
-            while (mesh_.from(h) == target_ || mesh_.to(h) == target_) ++h;
+            while (mesh_.from(HalfedgeId(h)).idx() == target_ || mesh_.to(HalfedgeId(h)).idx() == target_) ++h;
             if (!passable(h))
                 throw RequestError("cannot end at target vertex " + std::to_string(target_) +
                                    ": its only face is the first face of the strip and cannot be split");
             const SplitResult sr = split_at(h);
-            const bool a_first = source_ == kNone || has_vertex(sr.f_a, source_);
-            seed = a_first ? sr.f_a : sr.f_b;
-            dest = a_first ? sr.f_b : sr.f_a;
-            for (uint32_t f : {sr.f_b, sr.g_a}) region_[f] = r0;
+            const bool a_first = source_ == kNone || has_vertex(sr.f_a.idx(), source_);
+            seed = a_first ? sr.f_a.idx() : sr.f_b.idx();
+            dest = a_first ? sr.f_b.idx() : sr.f_a.idx();
+            for (uint32_t f : {sr.f_b.idx(), sr.g_a.idx()}) region_[f] = r0;
             region_size_[r0] += 2;
         }
         if (nf == 1) dest = kNone;
@@ -882,7 +885,7 @@ StripResult Builder::run() {
             const uint32_t r = piece_region[i];
             if (std::find(done_regions.begin(), done_regions.end(), r) != done_regions.end()) continue;
             done_regions.push_back(r);
-            defer(r, mesh_.twin(he[i]));
+            defer(r, mesh_.twin(HalfedgeId(he[i])).idx());
         }
     }
     grow(seed, grow_region, dest);
@@ -915,10 +918,10 @@ StripResult Builder::run() {
     // Swaps: two consecutive turns in the same direction.
     int prev_turn = 0;
     for (size_t i = 1; i + 1 < result.order.size(); ++i) {
-        const uint32_t hin = mesh_.shared_halfedge(result.order[i], result.order[i - 1]);
-        const uint32_t hout = mesh_.shared_halfedge(result.order[i], result.order[i + 1]);
+        const uint32_t hin = mesh_.shared_halfedge(FaceId(result.order[i]), FaceId(result.order[i - 1])).idx();
+        const uint32_t hout = mesh_.shared_halfedge(FaceId(result.order[i]), FaceId(result.order[i + 1])).idx();
         if (hin == kNone || hout == kNone) throw InternalError("strip builder: consecutive faces do not share an edge");
-        const int turn = hout == Mesh::next(hin) ? +1 : -1;
+        const int turn = hout == Mesh::next(HalfedgeId(hin)).idx() ? +1 : -1;
         if (turn == prev_turn) ++stats_.swaps;
         prev_turn = turn;
     }
@@ -961,7 +964,7 @@ StripArrays strip_arrays(const StripResult& result) {
     const auto& cv = result.mesh.corner_vertices();
     for (uint32_t f : result.order) {
         out.faces.push_back({cv[3 * f], cv[3 * f + 1], cv[3 * f + 2]});
-        out.parent.push_back(result.mesh.parent(f));
+        out.parent.push_back(result.mesh.parent(FaceId(f)).idx());
     }
     return out;
 }

@@ -26,23 +26,23 @@ void MatchingBuilder::choose_pins() {
     const uint32_t nf = mesh_.num_faces();
     uint32_t first = kNone, last = kNone;
     if (opt_.seed_face)
-        first = *opt_.seed_face;
+        first = opt_.seed_face->idx();
     else if (opt_.source)
-        first = face_at_vertex(mesh_, blocked_, *opt_.source, kNone);
+        first = face_at_vertex(mesh_, blocked_, opt_.source->idx(), kNone);
     if (opt_.target && nf > 1) {
-        last = face_at_vertex(mesh_, blocked_, *opt_.target, first);
+        last = face_at_vertex(mesh_, blocked_, opt_.target->idx(), first);
         if (last == first) {
             // The target's only face is the first face: split it across the edge opposite the
             // target so that both children touch it; start in one, end in the other.
             uint32_t h = 3 * first;
-            while (mesh_.from(h) == *opt_.target || mesh_.to(h) == *opt_.target) ++h;
+            while (mesh_.from(HalfedgeId(h)).idx() == opt_.target->idx() || mesh_.to(HalfedgeId(h)).idx() == opt_.target->idx()) ++h;
             if (!passable(h))
-                throw RequestError("cannot end at target vertex " + std::to_string(*opt_.target) +
+                throw RequestError("cannot end at target vertex " + std::to_string(opt_.target->idx()) +
                                    ": its only face is the first face of the strip and cannot be split");
             const SplitResult sr = split(h);
-            const bool a_first = !opt_.source || face_has_vertex(mesh_, sr.f_a, *opt_.source);
-            first = a_first ? sr.f_a : sr.f_b;
-            last = a_first ? sr.f_b : sr.f_a;
+            const bool a_first = !opt_.source || face_has_vertex(mesh_, sr.f_a.idx(), opt_.source->idx());
+            first = a_first ? sr.f_a.idx() : sr.f_b.idx();
+            last = a_first ? sr.f_b.idx() : sr.f_a.idx();
         }
     }
     if (first != kNone) pins_[num_pins_++] = first;
@@ -53,11 +53,12 @@ void MatchingBuilder::choose_pins() {
 // Splits the interior edge of h; per-half-edge flags follow the two half-edges that move, the
 // four new inner edges start clear. Pins keep their vertex.
 SplitResult MatchingBuilder::split(uint32_t h) {
-    const uint32_t t = mesh_.twin(h), hn = Mesh::next(h), tn = Mesh::next(t);
-    const uint32_t pin_vertex[2] = {opt_.source ? *opt_.source : kNone, opt_.target ? *opt_.target : kNone};
-    const SplitResult sr = mesh_.split_edge(h);
+    const uint32_t t = mesh_.twin(HalfedgeId(h)).idx(), hn = Mesh::next(HalfedgeId(h)).idx(), tn = Mesh::next(HalfedgeId(t)).idx();
+    const uint32_t pin_vertex[2] = {opt_.source ? opt_.source->idx() : kNone, opt_.target ? opt_.target->idx() : kNone};
+    const SplitResult sr = mesh_.split_edge(HalfedgeId(h));
+    if (opt_.validate_each_split) mesh_.validate();
     ++stats_.splits;
-    const uint32_t fb0 = 3 * sr.f_b, ga0 = 3 * sr.g_a;
+    const uint32_t fb0 = 3 * sr.f_b.idx(), ga0 = 3 * sr.g_a.idx();
     for (auto* a : {&blocked_, &matched_, &used_}) {
         a->resize(mesh_.num_halfedges(), 0);
         (*a)[fb0 + 1] = (*a)[hn];
@@ -66,15 +67,15 @@ SplitResult MatchingBuilder::split(uint32_t h) {
     }
     vlink_.resize(mesh_.num_faces(), 0);
     quota_.resize(mesh_.num_faces(), 0);
-    if (!sid_.empty()) sid_.resize(mesh_.num_faces(), sid_[sr.f_a]), sid_[sr.g_a] = sid_[sr.g_b];
+    if (!sid_.empty()) sid_.resize(mesh_.num_faces(), sid_[sr.f_a.idx()]), sid_[sr.g_a.idx()] = sid_[sr.g_b.idx()];
     for (uint32_t i = 0; i < num_pins_; ++i) {
         const uint32_t v = (i == 0 && !reversed_) ? pin_vertex[0] : pin_vertex[1];
         if (v == kNone) continue;
         const uint32_t old = pins_[i];
-        if (old == sr.f_a && !face_has_vertex(mesh_, sr.f_a, v))
-            pins_[i] = sr.f_b;
-        else if (old == sr.g_b && !face_has_vertex(mesh_, sr.g_b, v))
-            pins_[i] = sr.g_a;
+        if (old == sr.f_a.idx() && !face_has_vertex(mesh_, sr.f_a.idx(), v))
+            pins_[i] = sr.f_b.idx();
+        else if (old == sr.g_b.idx() && !face_has_vertex(mesh_, sr.g_b.idx(), v))
+            pins_[i] = sr.g_a.idx();
         if (pins_[i] != old) std::swap(vlink_[old], vlink_[pins_[i]]);  // the virtual link moves along
     }
     return sr;
@@ -94,13 +95,14 @@ void MatchingBuilder::split_ears() {
         if (f == pins_[0] || f == pins_[1] || degree(f) != 1) continue;
         uint32_t h = 3 * f;
         while (!passable(h)) ++h;
-        const uint32_t g = mesh_.neighbor(h);
+        const uint32_t g = mesh_.neighbor(HalfedgeId(h)).idx();
         if (degree(g) == 1) continue;  // two faces only: an ear pair is a strip already
-        const uint32_t tn = Mesh::next(mesh_.twin(h));
+        const uint32_t tn = Mesh::next(mesh_.twin(HalfedgeId(h))).idx();
         const SplitResult sr = split(h);
         const uint32_t inner = tn;  // after the split: g_b's half-edge towards g_a
         const auto has_match = [&](uint32_t x) { return matched_[3 * x] | matched_[3 * x + 1] | matched_[3 * x + 2]; };
-        if (degree(sr.g_a) == 3 && degree(sr.g_b) == 3 && !has_match(sr.g_a) && !has_match(sr.g_b)) set_pair(matched_, inner, 1);
+        if (degree(sr.g_a.idx()) == 3 && degree(sr.g_b.idx()) == 3 && !has_match(sr.g_a.idx()) && !has_match(sr.g_b.idx()))
+            set_pair(matched_, inner, 1);
     }
 }
 
@@ -125,8 +127,8 @@ std::vector<uint32_t> MatchingBuilder::dual_bridges() const {
             Frame& fr = stack.back();
             if (fr.k < 3) {
                 const uint32_t h = 3 * fr.f + fr.k++;
-                if (!passable(h) || mesh_.twin(h) == parent_edge[fr.f]) continue;
-                const uint32_t g = mesh_.neighbor(h);
+                if (!passable(h) || mesh_.twin(HalfedgeId(h)).idx() == parent_edge[fr.f]) continue;
+                const uint32_t g = mesh_.neighbor(HalfedgeId(h)).idx();
                 if (order[g] == kNone) {
                     order[g] = low[g] = time++;
                     parent_edge[g] = h;
@@ -139,7 +141,7 @@ std::vector<uint32_t> MatchingBuilder::dual_bridges() const {
             const uint32_t f = fr.f;
             stack.pop_back();
             if (parent_edge[f] == kNone) continue;
-            const uint32_t p = Mesh::face(parent_edge[f]);
+            const uint32_t p = Mesh::face(HalfedgeId(parent_edge[f])).idx();
             low[p] = std::min(low[p], low[f]);
             size[p] += size[f];
             // A small side (a spike, a pendant ring) is better joined as a loop later.
@@ -157,7 +159,7 @@ bool MatchingBuilder::chain_reaches_branch(uint32_t f, uint32_t from) const {
         if (degree(f) != 2) return false;
         uint32_t next = kNone;
         for (uint32_t h = 3 * f; h < 3 * f + 3; ++h)
-            if (passable(h) && mesh_.neighbor(h) != from) next = mesh_.neighbor(h);
+            if (passable(h) && mesh_.neighbor(HalfedgeId(h)).idx() != from) next = mesh_.neighbor(HalfedgeId(h)).idx();
         if (next == kNone) return false;
         from = f;
         f = next;
@@ -169,7 +171,7 @@ bool MatchingBuilder::chain_reaches_branch(uint32_t f, uint32_t from) const {
 // boundary (a fan, a strip of faces) is a strip already and is left alone.
 void MatchingBuilder::split_bridges() {
     for (uint32_t h : dual_bridges()) {
-        const uint32_t f = Mesh::face(h), g = mesh_.neighbor(h);
+        const uint32_t f = Mesh::face(HalfedgeId(h)).idx(), g = mesh_.neighbor(HalfedgeId(h)).idx();
         if (f == pins_[0] || f == pins_[1] || g == pins_[0] || g == pins_[1]) continue;
         if (chain_reaches_branch(f, g) && chain_reaches_branch(g, f)) split(h);
     }
@@ -197,12 +199,12 @@ void MatchingBuilder::set_quotas() {
 void MatchingBuilder::match_fans() {
     const uint32_t nh = mesh_.num_halfedges();
     std::vector<uint32_t> valence(mesh_.num_vertices(), 0);
-    for (uint32_t h = 0; h < nh; ++h) ++valence[mesh_.from(h)];
+    for (uint32_t h = 0; h < nh; ++h) ++valence[mesh_.from(HalfedgeId(h)).idx()];
     for (uint32_t h = 0; h < nh; ++h) {
-        if (valence[mesh_.from(h)] < kFanValence) continue;
-        const uint32_t outer = Mesh::next(h), f = Mesh::face(h);
+        if (valence[mesh_.from(HalfedgeId(h)).idx()] < kFanValence) continue;
+        const uint32_t outer = Mesh::next(HalfedgeId(h)).idx(), f = Mesh::face(HalfedgeId(h)).idx();
         if (!passable(outer) || matched_[outer] || quota_[f] == 0) continue;
-        const uint32_t g = mesh_.neighbor(outer);
+        const uint32_t g = mesh_.neighbor(HalfedgeId(outer)).idx();
         if (quota_[g] == 0) continue;
         set_pair(matched_, outer, 1);
         --quota_[f];
@@ -220,7 +222,7 @@ void MatchingBuilder::match_patterned() {
     // Karp-Sipser: a face left with one free neighbour takes it at once, before the pattern
     // asks, so few faces are left short (each costs an augmenting path, which breaks the pattern).
     std::vector<uint8_t> free_n(nf, 0);
-    auto wants = [&](uint32_t h) { return passable(h) && !matched_[h] && quota_[mesh_.neighbor(h)] > 0; };
+    auto wants = [&](uint32_t h) { return passable(h) && !matched_[h] && quota_[mesh_.neighbor(HalfedgeId(h)).idx()] > 0; };
     for (uint32_t f = 0; f < nf; ++f)
         if (quota_[f] > 0)
             for (uint32_t h = 3 * f; h < 3 * f + 3; ++h) free_n[f] += wants(h);
@@ -228,11 +230,11 @@ void MatchingBuilder::match_patterned() {
         if (quota_[f] > 0 && free_n[f] == 1) critical.push_back(f);
     auto match = [&](uint32_t h) {
         set_pair(matched_, h, 1);
-        for (uint32_t x : {Mesh::face(h), mesh_.neighbor(h)}) {
+        for (uint32_t x : {Mesh::face(HalfedgeId(h)).idx(), mesh_.neighbor(HalfedgeId(h)).idx()}) {
             if (--quota_[x] > 0) continue;
             for (uint32_t e = 3 * x; e < 3 * x + 3; ++e) {
                 if (!passable(e)) continue;
-                const uint32_t y = mesh_.neighbor(e);
+                const uint32_t y = mesh_.neighbor(HalfedgeId(e)).idx();
                 if (quota_[y] > 0 && free_n[y] > 0 && --free_n[y] == 1) critical.push_back(y);
             }
         }
@@ -263,15 +265,15 @@ void MatchingBuilder::match_patterned() {
             for (uint32_t k = 0; k < 3; ++k) {
                 const uint32_t h = 3 * f + k;
                 if (!passable(h) || matched_[h]) continue;
-                const uint32_t g = mesh_.neighbor(h);
+                const uint32_t g = mesh_.neighbor(HalfedgeId(h)).idx();
                 if (seen[g]) continue;
                 seen[g] = 1;
                 queue.push_back(g);
-                const uint32_t t = mesh_.twin(h);
-                if (m == Mesh::prev(h))
-                    pref[g] = Mesh::prev(t);  // m touches from(h): g's should touch to(h)
-                else if (m == Mesh::next(h))
-                    pref[g] = Mesh::next(t);  // and the other way round
+                const uint32_t t = mesh_.twin(HalfedgeId(h)).idx();
+                if (m == Mesh::prev(HalfedgeId(h)).idx())
+                    pref[g] = Mesh::prev(HalfedgeId(t)).idx();  // m touches from(h): g's should touch to(h)
+                else if (m == Mesh::next(HalfedgeId(h)).idx())
+                    pref[g] = Mesh::next(HalfedgeId(t)).idx();  // and the other way round
             }
         }
     }
@@ -298,8 +300,8 @@ std::vector<uint32_t> MatchingBuilder::walk() const {
         for (uint32_t k = 0; k < 3; ++k)
             if (used_[3 * f + k] && 3 * f + k != in) out = 3 * f + k;
         if (out == kNone) break;
-        in = mesh_.twin(out);
-        f = Mesh::face(in);
+        in = mesh_.twin(HalfedgeId(out)).idx();
+        f = Mesh::face(HalfedgeId(in)).idx();
         if (f == start) break;
     }
     return order;
@@ -320,14 +322,12 @@ StripResult MatchingBuilder::finish(std::vector<uint32_t> order) {
     return result;
 }
 
-// Not one strip (paths whose ends never touch): the growth builder, which always ends in one
-// strip, finishes on the mesh as split so far.
 // The growth builder on `mesh` (the input or a partly split copy that already cost `splits`);
 // an empty result when it fails (a broken precondition on a partly split mesh).
 StripResult MatchingBuilder::grow(Mesh mesh, uint32_t splits) const {
     StripOptions o = opt_;
     o.engine = StripEngine::Growth;
-    if (o.seed_face && o.source && !face_has_vertex(mesh, *o.seed_face, *o.source)) o.seed_face.reset();
+    if (o.seed_face && o.source && !face_has_vertex(mesh, o.seed_face->idx(), o.source->idx())) o.seed_face.reset();
     try {
         StripResult r = build_strip_growth(std::move(mesh), o);
         r.stats.splits += splits;
@@ -357,6 +357,8 @@ StripResult MatchingBuilder::as_fallback(StripResult r) const {
     return r;
 }
 
+// Not one strip (paths whose ends never touch): the growth builder, which always ends in one
+// strip, finishes on the mesh as split so far.
 StripResult MatchingBuilder::fallback() {
     // The input mesh is a candidate too: the engine's splits (ears, bridges, parity) can cost the
     // growth builder more than they save (boeing.off's small parts: +90% against +26%).

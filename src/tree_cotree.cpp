@@ -23,43 +23,47 @@ struct Decomposition {
     std::vector<uint32_t> fparent, depth;     ///< cotree parent face and depth per face
 };
 
-Decomposition decompose(const Mesh& mesh) {
-    Decomposition d;
-    const uint32_t nf = mesh.num_faces();
-    const uint32_t nv = mesh.num_vertices();
-    if (nf == 0) return d;
-    if (mesh.num_components() != 1) throw RequestError("tree-cotree: the mesh is not edge-connected");
-
-    // Quotient vertices: all boundary vertices become the extra vertex `nv`.
-    const uint32_t super = nv;
-    std::vector<uint32_t>& q = d.q;
-    q.resize(nv);
-    for (uint32_t v = 0; v < nv; ++v) q[v] = v;
+/// Quotient vertices: every boundary vertex becomes the extra vertex nv. False if there is no
+/// boundary.
+bool identify_boundary(const Mesh& mesh, Decomposition& d) {
+    const uint32_t super = mesh.num_vertices();
+    d.q.resize(mesh.num_vertices());
+    for (uint32_t v = 0; v < d.q.size(); ++v) d.q[v] = v;
     bool has_boundary = false;
-    const uint32_t nh = mesh.num_halfedges();
-    for (uint32_t h = 0; h < nh; ++h) {
+    for (const HalfedgeId h : mesh.halfedges()) {
         if (!mesh.is_boundary(h)) continue;
         has_boundary = true;
-        q[mesh.from(h)] = super;
-        q[mesh.to(h)] = super;
+        d.q[mesh.from(h).idx()] = super;
+        d.q[mesh.to(h).idx()] = super;
     }
+    return has_boundary;
+}
 
-    // Interior edges, one representative half-edge each (h < twin(h)).
-    std::vector<uint32_t>& edge_he = d.edge_he;
-    for (uint32_t h = 0; h < nh; ++h)
-        if (!mesh.is_boundary(h) && h < mesh.twin(h)) edge_he.push_back(h);
-    const uint32_t ne = static_cast<uint32_t>(edge_he.size());
-    d.edge_of_he.assign(nh, kNone);
-    for (uint32_t e = 0; e < ne; ++e) {
-        d.edge_of_he[edge_he[e]] = e;
-        d.edge_of_he[mesh.twin(edge_he[e])] = e;
+/// Interior edges, one representative half-edge each (h < twin(h)), and the map back.
+void number_interior_edges(const Mesh& mesh, Decomposition& d) {
+    for (const HalfedgeId h : mesh.halfedges())
+        if (!mesh.is_boundary(h) && h < mesh.twin(h)) d.edge_he.push_back(h.idx());
+    d.edge_of_he.assign(mesh.num_halfedges(), kNone);
+    for (uint32_t e = 0; e < d.edge_he.size(); ++e) {
+        d.edge_of_he[d.edge_he[e]] = e;
+        d.edge_of_he[mesh.twin(HalfedgeId(d.edge_he[e])).idx()] = e;
     }
+}
 
-    // Primal adjacency (CSR) of the quotient graph; loops (both ends on the boundary) are left out
-    // of the tree and so end up dual edges.
+/// Quotient endpoints of interior edge e.
+std::pair<uint32_t, uint32_t> quotient_ends(const Mesh& mesh, const Decomposition& d, uint32_t e) {
+    const HalfedgeId h(d.edge_he[e]);
+    return {d.q[mesh.from(h).idx()], d.q[mesh.to(h).idx()]};
+}
+
+/// T: breadth-first spanning tree of the quotient graph from `root`. Its adjacency is built as
+/// CSR; loops (both ends on the boundary) are left out of the tree and so end up dual edges.
+void build_tree(const Mesh& mesh, Decomposition& d, uint32_t root) {
+    const uint32_t nv = mesh.num_vertices();
+    const auto ne = static_cast<uint32_t>(d.edge_he.size());
     std::vector<uint32_t> start(nv + 2, 0);
     for (uint32_t e = 0; e < ne; ++e) {
-        const uint32_t a = q[mesh.from(edge_he[e])], b = q[mesh.to(edge_he[e])];
+        const auto [a, b] = quotient_ends(mesh, d, e);
         if (a == b) continue;
         ++start[a + 1];
         ++start[b + 1];
@@ -69,18 +73,11 @@ Decomposition decompose(const Mesh& mesh) {
     {
         std::vector<uint32_t> fill(start.begin(), start.end() - 1);
         for (uint32_t e = 0; e < ne; ++e) {
-            const uint32_t a = q[mesh.from(edge_he[e])], b = q[mesh.to(edge_he[e])];
+            const auto [a, b] = quotient_ends(mesh, d, e);
             if (a == b) continue;
             adj[fill[a]++] = e;
             adj[fill[b]++] = e;
         }
-    }
-
-    // T: breadth-first spanning tree of the quotient graph.
-    uint32_t root = super;
-    if (!has_boundary) {
-        root = mesh.from(0);
-        for (uint32_t h = 0; h < nh; ++h) root = std::min(root, mesh.from(h));
     }
     d.in_tree.assign(ne, 0);
     d.tree_parent_edge.assign(nv + 1, kNone);
@@ -92,7 +89,7 @@ Decomposition decompose(const Mesh& mesh) {
         const uint32_t v = queue[head];
         for (uint32_t i = start[v]; i < start[v + 1]; ++i) {
             const uint32_t e = adj[i];
-            const uint32_t a = q[mesh.from(edge_he[e])], b = q[mesh.to(edge_he[e])];
+            const auto [a, b] = quotient_ends(mesh, d, e);
             const uint32_t w = a == v ? b : a;
             if (seen[w]) continue;
             seen[w] = 1;
@@ -101,32 +98,51 @@ Decomposition decompose(const Mesh& mesh) {
             queue.push_back(w);
         }
     }
+}
 
-    // C: breadth-first spanning tree of the dual graph over edges not in T.
+/// C: breadth-first spanning tree of the dual graph over the edges not in T, from face 0.
+void build_cotree(const Mesh& mesh, Decomposition& d) {
+    const uint32_t nf = mesh.num_faces();
     d.fparent.assign(nf, kNone);
     d.depth.assign(nf, 0);
-    d.in_cotree.assign(ne, 0);
+    d.in_cotree.assign(d.edge_he.size(), 0);
     std::vector<uint8_t> reached(nf, 0);
-    std::vector<uint32_t> fqueue{0};
+    std::vector<FaceId> fqueue{FaceId(0)};
     reached[0] = 1;
     for (size_t head = 0; head < fqueue.size(); ++head) {
-        const uint32_t f = fqueue[head];
+        const FaceId f = fqueue[head];
         for (uint32_t k = 0; k < 3; ++k) {
-            const uint32_t h = Mesh::halfedge(f, k);
-            const uint32_t g = mesh.neighbor(h);
-            if (g == kNone) continue;
-            const uint32_t e = d.edge_of_he[h];
-            if (d.in_tree[e] || reached[g]) continue;
-            reached[g] = 1;
+            const HalfedgeId h = Mesh::halfedge(f, k);
+            const FaceId g = mesh.neighbor(h);
+            if (!g.valid()) continue;
+            const uint32_t e = d.edge_of_he[h.idx()];
+            if (d.in_tree[e] || reached[g.idx()]) continue;
+            reached[g.idx()] = 1;
             d.in_cotree[e] = 1;
-            d.fparent[g] = f;
-            d.depth[g] = d.depth[f] + 1;
+            d.fparent[g.idx()] = f.idx();
+            d.depth[g.idx()] = d.depth[f.idx()] + 1;
             fqueue.push_back(g);
         }
     }
     if (fqueue.size() != nf)
         throw InternalError("tree-cotree: the dual graph minus the tree is not connected (" + std::to_string(fqueue.size()) + " of " +
                             std::to_string(nf) + " faces)");
+}
+
+Decomposition decompose(const Mesh& mesh) {
+    Decomposition d;
+    if (mesh.num_faces() == 0) return d;
+    if (mesh.num_components() != 1) throw RequestError("tree-cotree: the mesh is not edge-connected");
+    const bool has_boundary = identify_boundary(mesh, d);
+    number_interior_edges(mesh, d);
+    // Rooted at the boundary vertex, else at the lowest referenced vertex.
+    uint32_t root = mesh.num_vertices();
+    if (!has_boundary) {
+        root = mesh.from(HalfedgeId(0)).idx();
+        for (const HalfedgeId h : mesh.halfedges()) root = std::min(root, mesh.from(h).idx());
+    }
+    build_tree(mesh, d, root);
+    build_cotree(mesh, d);
     return d;
 }
 
@@ -193,20 +209,12 @@ std::vector<std::vector<uint32_t>> tree_cotree_generators(const Mesh& mesh, cons
     std::vector<std::vector<uint32_t>> gens;
     for (uint32_t e = 0; e < ne; ++e) {
         if (in_tree[e] || in_cotree[e]) continue;
-        std::vector<uint32_t> cycle = cotree_cycle(fparent, depth, Mesh::face(edge_he[e]), Mesh::face(mesh.twin(edge_he[e])));
+        const HalfedgeId h(edge_he[e]);
+        std::vector<uint32_t> cycle = cotree_cycle(fparent, depth, Mesh::face(h).idx(), Mesh::face(mesh.twin(h)).idx());
         for (uint32_t& x : cycle) x = pos[x];
         gens.push_back(std::move(cycle));
     }
     return gens;
-}
-
-Cycles tree_cotree_cycles(const StripResult& result) {
-    Cycles out;
-    out.cycles = tree_cotree_generators(result.mesh, result.order);
-    const StripArrays arrays = strip_arrays(result);
-    out.lengths.reserve(out.cycles.size());
-    for (const auto& c : out.cycles) out.lengths.push_back(cycle_length(arrays, c));
-    return out;
 }
 
 }  // namespace singlestrip
@@ -224,8 +232,7 @@ void preorder_intervals(const Mesh& mesh, const Decomposition& d, std::vector<ui
     size.assign(nq, 1);
     if (d.tree_order.empty()) return;
     auto parent_of = [&](uint32_t v) {
-        const uint32_t e = d.tree_parent_edge[v];
-        const uint32_t a = d.q[mesh.from(d.edge_he[e])], b = d.q[mesh.to(d.edge_he[e])];
+        const auto [a, b] = quotient_ends(mesh, d, d.tree_parent_edge[v]);
         return a == v ? b : a;
     };
     for (auto it = d.tree_order.rbegin(); it != d.tree_order.rend(); ++it)
@@ -255,9 +262,9 @@ HomologyClassifier::HomologyClassifier(const Mesh& mesh) : mesh_(&mesh) {
     std::vector<std::pair<uint32_t, uint32_t>> ends;  // (preorder, class bit)
     ends.reserve(2 * leftover_.size());
     for (uint32_t j = 0; j < leftover_.size(); ++j) {
-        const uint32_t h = d.edge_he[leftover_[j]];
-        ends.push_back({pre[d.q[mesh.from(h)]], j});
-        ends.push_back({pre[d.q[mesh.to(h)]], j});
+        const auto [a, b] = quotient_ends(mesh, d, leftover_[j]);
+        ends.push_back({pre[a], j});
+        ends.push_back({pre[b], j});
     }
     std::sort(ends.begin(), ends.end());
     std::vector<uint32_t> end_pre(ends.size());
@@ -279,13 +286,13 @@ HomologyClassifier::HomologyClassifier(const Mesh& mesh) : mesh_(&mesh) {
 }
 
 std::vector<uint32_t> HomologyClassifier::generator(size_t j) const {
-    const uint32_t h = leftover_he_.at(j);
-    return cotree_cycle(fparent_, depth_, Mesh::face(h), Mesh::face(mesh_->twin(h)));
+    const HalfedgeId h(leftover_he_.at(j));
+    return cotree_cycle(fparent_, depth_, Mesh::face(h).idx(), Mesh::face(mesh_->twin(h)).idx());
 }
 
 size_t HomologyClassifier::generator_length(size_t j) const {
-    const uint32_t h = leftover_he_.at(j);
-    return cotree_cycle_length(fparent_, depth_, Mesh::face(h), Mesh::face(mesh_->twin(h)));
+    const HalfedgeId h(leftover_he_.at(j));
+    return cotree_cycle_length(fparent_, depth_, Mesh::face(h).idx(), Mesh::face(mesh_->twin(h)).idx());
 }
 
 // Bit j = crossings of leftover edge j + crossings of the tree paths from its two endpoints to
@@ -298,9 +305,9 @@ std::vector<uint64_t> HomologyClassifier::classify(const std::vector<uint32_t>& 
     if (faces.size() < 2) return bits;
     std::vector<uint32_t> crossed(faces.size());
     for (size_t i = 0; i < faces.size(); ++i) {
-        const uint32_t h = mesh.shared_halfedge(faces[i], faces[(i + 1) % faces.size()]);
+        const HalfedgeId h = mesh.shared_halfedge(FaceId(faces[i]), FaceId(faces[(i + 1) % faces.size()]));
         if (h == kNone) throw InternalError("homology class: consecutive faces of a chain are not adjacent");
-        crossed[i] = edge_of_he_[h];
+        crossed[i] = edge_of_he_[h.idx()];
     }
     std::sort(crossed.begin(), crossed.end());
     auto flip = [&](uint32_t bit) { bits[bit / 64] ^= uint64_t{1} << (bit % 64); };

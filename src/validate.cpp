@@ -11,12 +11,13 @@
 #include <vector>
 
 #include "singlestrip/errors.hpp"
+#include "singlestrip/mesh.hpp"
 #include "singlestrip/repair.hpp"
+#include "soup_edges.hpp"
 
 namespace singlestrip {
 namespace {
 
-constexpr uint32_t kNo = 0xffffffffu;
 constexpr std::size_t kMaxPerKind = 10;  // listed problems per kind; the rest are counted
 
 struct UnionFind {
@@ -62,7 +63,7 @@ struct Analysis {
     const TriangleSoup& soup;
     std::size_t nf = 0, nv = 0;
     std::vector<char> usable;    // face in range and with three distinct vertices
-    std::vector<uint32_t> twin;  // half-edge 3f+k -> its partner on a 2-face edge, else kNo
+    std::vector<uint32_t> twin;  // half-edge 3f+k -> its partner on a 2-face edge, else kNone
     std::vector<uint32_t> comp;  // edge-connected component root per usable face
     std::vector<int8_t> flip;    // orientation BFS result (1 = flip to be consistent)
     ProblemList out_of_range{"index_out_of_range"}, repeated{"repeated_vertex"}, duplicate{"duplicate_face"}, nm_edge{"non_manifold_edge"},
@@ -110,58 +111,16 @@ struct Analysis {
         orient_bfs();
     }
 
-    // Usable half-edges ordered by (smaller endpoint, larger endpoint, id): equal neighbours form
-    // one undirected edge. Two stable counting-sort passes (larger endpoint, then smaller) do it
-    // in O(faces + vertices) with no comparisons; a comparison sort per vertex bucket was the
-    // largest cost of prepare_soup.
+    // Usable half-edges grouped by undirected edge (soup_edges.hpp), each edge examined once.
     void group_edges() {
-        twin.assign(3 * nf, kNo);
-        auto lo = [&](uint32_t h) { return std::min(from(h), to(h)); };
-        auto hi = [&](uint32_t h) { return std::max(from(h), to(h)); };
-        std::vector<uint32_t> offset(nv + 1, 0);
-        std::vector<uint32_t> bucket;
-        {
-            std::vector<uint32_t> by_hi;
-            for (int pass = 0; pass < 2; ++pass) {
-                std::fill(offset.begin(), offset.end(), 0u);
-                for (std::size_t f = 0; f < nf; ++f)
-                    if (usable[f])
-                        for (uint32_t k = 0; k < 3; ++k) {
-                            const auto h = static_cast<uint32_t>(3 * f + k);
-                            ++offset[(pass == 0 ? hi(h) : lo(h)) + 1];
-                        }
-                for (std::size_t v = 0; v < nv; ++v) offset[v + 1] += offset[v];
-                std::vector<uint32_t> out(offset[nv]);
-                std::vector<uint32_t> fill(offset.begin(), offset.end() - 1);
-                if (pass == 0) {
-                    for (std::size_t f = 0; f < nf; ++f)
-                        if (usable[f])
-                            for (uint32_t k = 0; k < 3; ++k) {
-                                const auto h = static_cast<uint32_t>(3 * f + k);
-                                out[fill[hi(h)]++] = h;
-                            }
-                    by_hi = std::move(out);
-                } else {
-                    for (uint32_t h : by_hi) out[fill[lo(h)]++] = h;
-                    bucket = std::move(out);
-                }
-            }
-        }
+        twin.assign(3 * nf, kNone);
+        const SoupEdges grouped(soup.triangles, nv, &usable);
         UnionFind faces(nf);
         corners_ = std::make_unique<UnionFind>(3 * nf);
         UnionFind bverts(nv);
         std::vector<char> on_boundary(nv, 0);
-        for (std::size_t v = 0; v < nv; ++v) {
-            auto b = bucket.begin() + offset[v], e = bucket.begin() + offset[v + 1];
-            for (auto i = b; i != e;) {
-                const uint32_t other = hi(*i);
-                auto j = i + 1;
-                while (j != e && hi(*j) == other) ++j;
-                on_edge(static_cast<uint32_t>(v), other, i, j, faces, bverts, on_boundary);
-                i = j;
-            }
-        }
-        comp.assign(nf, kNo);
+        grouped.for_each_edge([&](uint32_t lo, uint32_t hi, Range b, Range e) { on_edge(lo, hi, b, e, faces, bverts, on_boundary); });
+        comp.assign(nf, kNone);
         std::vector<uint64_t> size_of_root(nf, 0);
         for (std::size_t f = 0; f < nf; ++f)
             if (usable[f]) {
@@ -177,8 +136,9 @@ struct Analysis {
 
     uint32_t corner_at(uint32_t h, uint32_t v) const { return from(h) == v ? h : 3 * (h / 3) + (h % 3 + 1) % 3; }
 
-    void on_edge(uint32_t lo, uint32_t hi, std::vector<uint32_t>::iterator b, std::vector<uint32_t>::iterator e, UnionFind& faces,
-                 UnionFind& bverts, std::vector<char>& on_boundary) {
+    using Range = std::vector<uint32_t>::const_iterator;
+
+    void on_edge(uint32_t lo, uint32_t hi, Range b, Range e, UnionFind& faces, UnionFind& bverts, std::vector<char>& on_boundary) {
         ++edges;
         const auto n = static_cast<std::size_t>(e - b);
         if (n >= 2) report_duplicates(lo, hi, b, e);
@@ -213,7 +173,7 @@ struct Analysis {
     // smallest vertices (lo, hi): the faces there whose third vertex is above hi, grouped by it.
     // Edges come in (lo, hi) order and groups in third-vertex order, so the report is ordered by
     // sorted vertex triple, faces ascending, without sorting the faces.
-    void report_duplicates(uint32_t lo, uint32_t hi, std::vector<uint32_t>::iterator b, std::vector<uint32_t>::iterator e) {
+    void report_duplicates(uint32_t lo, uint32_t hi, Range b, Range e) {
         std::vector<std::pair<uint32_t, uint32_t>> by_third;  // (third vertex, face), usually 2 entries
         for (auto i = b; i != e; ++i)
             if (third(*i) > hi) by_third.emplace_back(third(*i), *i / 3);
@@ -265,7 +225,7 @@ struct Analysis {
                 const uint32_t f = queue[qi];
                 for (uint32_t k = 0; k < 3; ++k) {
                     const uint32_t h = 3 * f + k, t = twin[h];
-                    if (t == kNo) continue;
+                    if (t == kNone) continue;
                     const uint32_t g = t / 3;
                     const int8_t want = static_cast<int8_t>(flip[f] ^ (from(h) == from(t) ? 1 : 0));
                     if (flip[g] < 0) {
@@ -406,11 +366,11 @@ TriangleSoup prepare_soup(TriangleSoup soup, const PrepareOptions& opt, const st
 
 std::vector<uint32_t> face_components(const TriangleSoup& soup, uint32_t* count) {
     Analysis a(soup);
-    std::vector<uint32_t> id(soup.triangles.size(), kNo), of_root(soup.triangles.size(), kNo);
+    std::vector<uint32_t> id(soup.triangles.size(), kNone), of_root(soup.triangles.size(), kNone);
     uint32_t next = 0;
     for (std::size_t f = 0; f < id.size(); ++f)
-        if (a.comp[f] != kNo) {
-            if (of_root[a.comp[f]] == kNo) of_root[a.comp[f]] = next++;
+        if (a.comp[f] != kNone) {
+            if (of_root[a.comp[f]] == kNone) of_root[a.comp[f]] = next++;
             id[f] = of_root[a.comp[f]];
         }
     if (count) *count = next;

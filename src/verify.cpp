@@ -133,6 +133,11 @@ struct Adjacency {
         return it != last && to(*it) == b ? *it : kNo;
     }
     bool has_edge(uint32_t a, uint32_t b) const { return find(a, b) != kNo || find(b, a) != kNo; }
+    /// Records a problem (the first kMaxPerCheck are kept): the triangle list is not a manifold.
+    void problem(const std::string& s) {
+        manifold = false;
+        if (problems.size() < kMaxPerCheck) problems.push_back(s);
+    }
 };
 
 bool same_vertex_set(const Triangle& a, const Triangle& b) {
@@ -142,31 +147,32 @@ bool same_vertex_set(const Triangle& a, const Triangle& b) {
     return x == y;
 }
 
-Adjacency build_adjacency(size_t num_points, const std::vector<Triangle>& faces, const std::string& what) {
-    Adjacency a;
-    a.num_points = num_points;
-    a.faces = faces;
-    const size_t F = faces.size();
+// Faces with an index out of range or a repeated vertex are not ok.
+void check_faces(Adjacency& a, const std::string& what) {
+    const size_t F = a.faces.size();
+    const size_t num_points = a.num_points;
+    const std::vector<Triangle>& faces = a.faces;
     a.face_ok.assign(F, true);
-    a.twin.assign(3 * F, kNo);
-    auto problem = [&](const std::string& s) {
-        a.manifold = false;
-        if (a.problems.size() < kMaxPerCheck) a.problems.push_back(s);
-    };
     for (size_t f = 0; f < F; ++f) {
         const Triangle& t = faces[f];
         bool ok = t[0] < num_points && t[1] < num_points && t[2] < num_points;
         if (!ok) {
-            problem(what + " face " + std::to_string(f) + " " + tri_str(t) + ": vertex index out of range (" + std::to_string(num_points) +
-                    " vertices)");
+            a.problem(what + " face " + std::to_string(f) + " " + tri_str(t) + ": vertex index out of range (" +
+                      std::to_string(num_points) + " vertices)");
         } else if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) {
-            problem(what + " face " + std::to_string(f) + " " + tri_str(t) + ": repeated vertex");
+            a.problem(what + " face " + std::to_string(f) + " " + tri_str(t) + ": repeated vertex");
             ok = false;
         }
         a.face_ok[f] = ok;
     }
-    // Outgoing half-edges per vertex, each bucket ordered by (target, id): a stable counting sort
-    // by target, then one by source (linear; a comparison sort per bucket was verify's largest cost).
+}
+
+// Outgoing half-edges per vertex, each bucket ordered by (target, id): a stable counting sort
+// by target, then one by source (linear; a comparison sort per bucket was verify's largest cost).
+void bucket_outgoing(Adjacency& a) {
+    const size_t F = a.faces.size();
+    const size_t num_points = a.num_points;
+    const std::vector<Triangle>& faces = a.faces;
     std::vector<uint32_t> by_to;
     {
         std::vector<uint32_t> count(num_points + 1, 0);
@@ -187,7 +193,15 @@ Adjacency build_adjacency(size_t num_points, const std::vector<Triangle>& faces,
         std::vector<uint32_t> fill(a.out_offset.begin(), a.out_offset.end() - 1);
         for (uint32_t h : by_to) a.out_he[fill[a.from(h)]++] = h;
     }
-    by_to = {};
+}
+
+// Twins between the first half-edges of each (from, to) group; repeated directed half-edges and
+// duplicate faces are problems.
+void pair_twins(Adjacency& a, const std::string& what) {
+    const size_t F = a.faces.size();
+    const size_t num_points = a.num_points;
+    const std::vector<Triangle>& faces = a.faces;
+    a.twin.assign(3 * F, kNo);
     std::vector<bool> canonical(3 * F, false);  // first half-edge of its (from,to) group
     for (size_t v = 0; v < num_points; ++v) {
         auto first = a.out_he.begin() + a.out_offset[v], last = a.out_he.begin() + a.out_offset[v + 1];
@@ -195,12 +209,12 @@ Adjacency build_adjacency(size_t num_points, const std::vector<Triangle>& faces,
             if (it != first && a.to(*it) == a.to(*(it - 1))) {
                 const uint32_t h = *it, g = *(it - 1);
                 if (same_vertex_set(faces[h / 3], faces[g / 3]))
-                    problem(what + " faces " + std::to_string(g / 3) + " and " + std::to_string(h / 3) + " are the same triangle " +
-                            tri_str(faces[h / 3]) + " (duplicate face)");
+                    a.problem(what + " faces " + std::to_string(g / 3) + " and " + std::to_string(h / 3) + " are the same triangle " +
+                              tri_str(faces[h / 3]) + " (duplicate face)");
                 else
-                    problem(what + " edge (" + std::to_string(a.from(h)) + "," + std::to_string(a.to(h)) +
-                            ") is traversed in the same direction by faces " + std::to_string(g / 3) + " and " + std::to_string(h / 3) +
-                            " (flipped face, or more than two faces on an edge)");
+                    a.problem(what + " edge (" + std::to_string(a.from(h)) + "," + std::to_string(a.to(h)) +
+                              ") is traversed in the same direction by faces " + std::to_string(g / 3) + " and " + std::to_string(h / 3) +
+                              " (flipped face, or more than two faces on an edge)");
             } else {
                 canonical[*it] = true;
             }
@@ -216,10 +230,16 @@ Adjacency build_adjacency(size_t num_points, const std::vector<Triangle>& faces,
     for (uint32_t f = 0; f < F; ++f) {
         const uint32_t t0 = a.twin[3 * f], t1 = a.twin[3 * f + 1], t2 = a.twin[3 * f + 2];
         if (t0 != kNo && t1 != kNo && t2 != kNo && t0 / 3 == t1 / 3 && t1 / 3 == t2 / 3 && f < t0 / 3)
-            problem(what + " faces " + std::to_string(f) + " and " + std::to_string(t0 / 3) + " are the same triangle " +
-                    tri_str(faces[f]) + " with opposite orientations (duplicate face)");
+            a.problem(what + " faces " + std::to_string(f) + " and " + std::to_string(t0 / 3) + " are the same triangle " +
+                      tri_str(faces[f]) + " with opposite orientations (duplicate face)");
     }
-    // Counts: referenced vertices, edges, boundary.
+}
+
+// Referenced vertices, edges, boundary vertices and the Euler characteristic. Returns the first
+// corner seen at each vertex (kNo for an unreferenced one).
+std::vector<uint32_t> count_elements(Adjacency& a) {
+    const size_t F = a.faces.size();
+    const size_t num_points = a.num_points;
     std::vector<uint32_t> first_corner(num_points, kNo);
     a.on_boundary.assign(num_points, false);
     for (uint32_t f = 0; f < F; ++f) {
@@ -242,43 +262,61 @@ Adjacency build_adjacency(size_t num_points, const std::vector<Triangle>& faces,
     long long valid_faces = 0;
     for (bool ok : a.face_ok) valid_faces += ok ? 1 : 0;
     a.euler = a.referenced_vertices - a.edges + valid_faces;
-    // Vertex manifoldness: corners around a vertex joined across shared edges must form one fan.
-    {
-        UnionFind uf(3 * F);
-        for (uint32_t f = 0; f < F; ++f) {
-            if (!a.face_ok[f]) continue;
-            for (uint32_t i = 0; i < 3; ++i) {
-                const uint32_t h = 3 * f + i;  // corner at from(h), outgoing half-edge h
-                const uint32_t t = a.twin[h];
-                if (t != kNo) {
-                    // twin runs to(h)->from(h); its face's corner at from(h) is corner of next(t).
-                    const uint32_t tn = 3 * (t / 3) + (t % 3 + 1) % 3;
-                    uf.unite(h, tn);
-                }
-            }
-        }
-        for (uint32_t f = 0; f < F; ++f) {
-            if (!a.face_ok[f]) continue;
-            for (uint32_t i = 0; i < 3; ++i) {
-                const uint32_t h = 3 * f + i;
-                const uint32_t v = a.from(h);
-                if (uf.find(h) != uf.find(first_corner[v])) {
-                    problem(what + " vertex " + std::to_string(v) + " is non-manifold (its faces form more than one fan; seen at face " +
-                            std::to_string(f) + ")");
-                    // Merge so that each extra fan is reported once.
-                    uf.unite(h, first_corner[v]);
-                }
+    return first_corner;
+}
+
+// Vertex manifoldness: corners around a vertex joined across shared edges must form one fan.
+void check_fans(Adjacency& a, const std::vector<uint32_t>& first_corner, const std::string& what) {
+    const size_t F = a.faces.size();
+    UnionFind uf(3 * F);
+    for (uint32_t f = 0; f < F; ++f) {
+        if (!a.face_ok[f]) continue;
+        for (uint32_t i = 0; i < 3; ++i) {
+            const uint32_t h = 3 * f + i;  // corner at from(h), outgoing half-edge h
+            const uint32_t t = a.twin[h];
+            if (t != kNo) {
+                // twin runs to(h)->from(h); its face's corner at from(h) is corner of next(t).
+                const uint32_t tn = 3 * (t / 3) + (t % 3 + 1) % 3;
+                uf.unite(h, tn);
             }
         }
     }
-    // Boundary loops: components of the boundary-edge graph.
-    {
-        UnionFind uf(num_points);
-        for (uint32_t h = 0; h < 3 * F; ++h)
-            if (a.face_ok[h / 3] && a.twin[h] == kNo) uf.unite(a.from(h), a.to(h));
-        for (uint32_t v = 0; v < num_points; ++v)
-            if (a.on_boundary[v] && uf.find(v) == v) ++a.boundary_loops;
+    for (uint32_t f = 0; f < F; ++f) {
+        if (!a.face_ok[f]) continue;
+        for (uint32_t i = 0; i < 3; ++i) {
+            const uint32_t h = 3 * f + i;
+            const uint32_t v = a.from(h);
+            if (uf.find(h) != uf.find(first_corner[v])) {
+                a.problem(what + " vertex " + std::to_string(v) + " is non-manifold (its faces form more than one fan; seen at face " +
+                          std::to_string(f) + ")");
+                // Merge so that each extra fan is reported once.
+                uf.unite(h, first_corner[v]);
+            }
+        }
     }
+}
+
+// Boundary loops: components of the boundary-edge graph.
+void count_boundary_loops(Adjacency& a) {
+    const size_t F = a.faces.size();
+    const size_t num_points = a.num_points;
+    UnionFind uf(num_points);
+    for (uint32_t h = 0; h < 3 * F; ++h)
+        if (a.face_ok[h / 3] && a.twin[h] == kNo) uf.unite(a.from(h), a.to(h));
+    for (uint32_t v = 0; v < num_points; ++v)
+        if (a.on_boundary[v] && uf.find(v) == v) ++a.boundary_loops;
+}
+
+Adjacency build_adjacency(size_t num_points, const std::vector<Triangle>& faces, const std::string& what) {
+    Adjacency a;
+    a.num_points = num_points;
+    a.faces = faces;
+    check_faces(a, what);
+    bucket_outgoing(a);
+    pair_twins(a, what);
+    const std::vector<uint32_t> first_corner = count_elements(a);
+    check_fans(a, first_corner, what);
+    count_boundary_loops(a);
     return a;
 }
 
@@ -615,17 +653,11 @@ size_t z2_rank(std::vector<Bits>& rows, size_t ncols) {
     return rank;
 }
 
-void check_cycles(const VerifyInput& in, const Adjacency& out, long long expected, Failures& fails, VerifyReport& report) {
-    const auto& cycles = *in.cycles;
-    const size_t m = cycles.size();
+/// Undirected edge ids of the output's half-edges (both halves of an interior edge share one).
+std::vector<uint32_t> number_edges(const Adjacency& out, uint32_t& num_edges) {
     const size_t F = out.faces.size();
-    report.cycles_checked = m;
-    if (static_cast<long long>(m) != expected)
-        fails.add("cycles",
-                  "found " + std::to_string(m) + " cycles, expected 2g+h-1 = " + std::to_string(expected) + " (2g for a closed surface)");
-    // Edge ids (undirected) for interior edges.
     std::vector<uint32_t> edge_id(3 * F, kNo);
-    uint32_t num_edges = 0;
+    num_edges = 0;
     for (uint32_t h = 0; h < 3 * F; ++h) {
         if (!out.face_ok[h / 3]) continue;
         const uint32_t t = out.twin[h];
@@ -634,8 +666,15 @@ void check_cycles(const VerifyInput& in, const Adjacency& out, long long expecte
         else
             edge_id[h] = edge_id[t];
     }
-    // Crossings: (edge, cycle) pairs.
-    std::vector<std::pair<uint32_t, uint32_t>> cross;
+    return edge_id;
+}
+
+/// Each cycle's crossings (edge, cycle) into `cross`; false (with failures) if a cycle is not a
+/// closed chain of edge-adjacent output faces.
+bool collect_crossings(const std::vector<std::vector<uint32_t>>& cycles, const Adjacency& out, const std::vector<uint32_t>& edge_id,
+                       Failures& fails, std::vector<std::pair<uint32_t, uint32_t>>& cross) {
+    const size_t m = cycles.size();
+    const size_t F = out.faces.size();
     bool closed_ok = true;
     for (uint32_t c = 0; c < m; ++c) {
         const auto& cyc = cycles[c];
@@ -670,41 +709,56 @@ void check_cycles(const VerifyInput& in, const Adjacency& out, long long expecte
         }
         closed_ok = closed_ok && this_ok;
     }
-    if (!closed_ok) {
-        report.notes.push_back("cycles: independence not checked (a cycle is not a closed chain)");
-        return;
-    }
-    if (m == 0) return;
-    if (static_cast<long long>(m) > expected) {
-        report.notes.push_back("cycles: independence not checked (more cycles than the dimension of H1)");
-        return;
-    }
-    const size_t W = (m + 63) / 64;
-    // Sparse crossing parity per edge: CSR over edges of cycles crossing an odd number of times.
-    std::sort(cross.begin(), cross.end());
-    std::vector<uint32_t> edge_slot(num_edges, kNo);  // edge -> row of edge_bits, kNo = crossed by none
+    return closed_ok;
+}
+
+/// Crossing parity per edge (a bit per cycle), stored only for edges some cycle crosses an odd
+/// number of times.
+struct EdgeParity {
+    size_t W = 0;
+    std::vector<uint32_t> edge_slot;  // edge -> row of edge_bits, kNo = crossed by none
     std::vector<Bits> edge_bits;
-    for (size_t i = 0; i < cross.size();) {
-        size_t j = i;
-        while (j < cross.size() && cross[j] == cross[i]) ++j;
-        if ((j - i) % 2 == 1) {
-            uint32_t& slot = edge_slot[cross[i].first];
-            if (slot == kNo) {
-                slot = static_cast<uint32_t>(edge_bits.size());
-                edge_bits.emplace_back(W, 0);
+    EdgeParity(std::vector<std::pair<uint32_t, uint32_t>> cross, uint32_t num_edges, size_t m)
+        : W((m + 63) / 64), edge_slot(num_edges, kNo) {
+        std::sort(cross.begin(), cross.end());
+        for (size_t i = 0; i < cross.size();) {
+            size_t j = i;
+            while (j < cross.size() && cross[j] == cross[i]) ++j;
+            if ((j - i) % 2 == 1) {
+                uint32_t& slot = edge_slot[cross[i].first];
+                if (slot == kNo) {
+                    slot = static_cast<uint32_t>(edge_bits.size());
+                    edge_bits.emplace_back(W, 0);
+                }
+                edge_bits[slot][cross[i].second / 64] ^= uint64_t{1} << (cross[i].second % 64);
             }
-            edge_bits[slot][cross[i].second / 64] ^= uint64_t{1} << (cross[i].second % 64);
+            i = j;
         }
-        i = j;
     }
-    auto xor_edge = [&](Bits& into, uint32_t e) {
+    void xor_edge(Bits& into, uint32_t e) const {
         if (edge_slot[e] != kNo)
             for (size_t k = 0; k < W; ++k) into[k] ^= edge_bits[edge_slot[e]][k];
-    };
-    // Tree-cotree on the output, boundary vertices identified to one super-vertex S.
+    }
+};
+
+/// Tree-cotree on the output, boundary vertices identified to one super-vertex S = num_points.
+struct OutputTreeCotree {
+    uint32_t root = kNo;
+    std::vector<uint32_t> order;             // quotient vertices in BFS order, root first
+    std::vector<uint32_t> tree_parent_edge;  // per quotient vertex: half-edge to its parent
+    std::vector<uint32_t> leftovers;         // one half-edge per edge in neither tree
+};
+
+uint32_t quotient(const Adjacency& out, uint32_t v) {
+    return out.on_boundary[v] ? static_cast<uint32_t>(out.num_points) : v;
+}
+
+OutputTreeCotree output_tree_cotree(const Adjacency& out, const std::vector<uint32_t>& edge_id, uint32_t num_edges, bool has_boundary) {
+    const size_t F = out.faces.size();
+    OutputTreeCotree tc;
     const uint32_t NV = static_cast<uint32_t>(out.num_points);
     const uint32_t S = NV;
-    auto q = [&](uint32_t v) { return out.on_boundary[v] ? S : v; };
+    auto q = [&](uint32_t v) { return quotient(out, v); };
     // Interior edges as adjacency lists (CSR) of the quotient graph.
     std::vector<uint32_t> off(NV + 2, 0);
     std::vector<uint32_t> interior;  // one representative half-edge per interior edge
@@ -728,15 +782,17 @@ void check_cycles(const VerifyInput& in, const Adjacency& out, long long expecte
         }
     }
     std::vector<bool> in_tree(num_edges, false);
-    std::vector<uint32_t> tree_parent_edge(NV + 1, kNo), order;
+    std::vector<uint32_t>& tree_parent_edge = tc.tree_parent_edge;
+    std::vector<uint32_t>& order = tc.order;
+    tree_parent_edge.assign(NV + 1, kNo);
     std::vector<bool> seen(NV + 1, false);
-    uint32_t root = kNo;
-    if (report.boundary_loops > 0)
+    uint32_t& root = tc.root;
+    if (has_boundary)
         root = S;
     else
         for (uint32_t f = 0; f < F && root == kNo; ++f)
             if (out.face_ok[f]) root = out.faces[f][0];
-    if (root == kNo) return;
+    if (root == kNo) return tc;
     seen[root] = true;
     order.push_back(root);
     for (size_t i = 0; i < order.size(); ++i) {
@@ -770,14 +826,23 @@ void check_cycles(const VerifyInput& in, const Adjacency& out, long long expecte
             fq.push_back(t / 3);
         }
     }
-    std::vector<uint32_t> leftovers;
     for (uint32_t h : interior)
-        if (!in_tree[edge_id[h]] && !in_cotree[edge_id[h]]) leftovers.push_back(h);
-    if (static_cast<long long>(leftovers.size()) != expected) {
-        fails.add("cycles", "tree-cotree on the output gives " + std::to_string(leftovers.size()) + " generators, expected " +
-                                std::to_string(expected) + " (output is not a connected surface of the input's topology)");
-        return;
-    }
+        if (!in_tree[edge_id[h]] && !in_cotree[edge_id[h]]) tc.leftovers.push_back(h);
+    return tc;
+}
+
+/// Class rows of the tree-cotree generators: bit c of row j says whether cycle c crosses the
+/// relative cycle of leftover edge j (the edge plus the tree paths to its ends) an odd number of
+/// times.
+std::vector<Bits> class_rows(const Adjacency& out, const OutputTreeCotree& tc, const std::vector<uint32_t>& edge_id,
+                             const EdgeParity& parity) {
+    const size_t W = parity.W;
+    const uint32_t NV = static_cast<uint32_t>(out.num_points);
+    auto q = [&](uint32_t v) { return quotient(out, v); };
+    const uint32_t root = tc.root;
+    const std::vector<uint32_t>& order = tc.order;
+    const std::vector<uint32_t>& tree_parent_edge = tc.tree_parent_edge;
+    const std::vector<uint32_t>& leftovers = tc.leftovers;
     // P(x): parity vector of tree path root->x.
     std::vector<Bits> P(NV + 1);
     P[root].assign(W, 0);
@@ -786,7 +851,7 @@ void check_cycles(const VerifyInput& in, const Adjacency& out, long long expecte
         const uint32_t a = q(out.from(h)), b = q(out.to(h));
         const uint32_t x = a == y ? b : a;
         P[y] = P[x];
-        xor_edge(P[y], edge_id[h]);
+        parity.xor_edge(P[y], edge_id[h]);
     }
     std::vector<Bits> rows;
     rows.reserve(leftovers.size());
@@ -795,9 +860,42 @@ void check_cycles(const VerifyInput& in, const Adjacency& out, long long expecte
         Bits r(W, 0);
         if (!P[a].empty() && !P[b].empty())
             for (size_t k = 0; k < W; ++k) r[k] = P[a][k] ^ P[b][k];
-        xor_edge(r, edge_id[h]);
+        parity.xor_edge(r, edge_id[h]);
         rows.push_back(std::move(r));
     }
+    return rows;
+}
+
+void check_cycles(const VerifyInput& in, const Adjacency& out, long long expected, Failures& fails, VerifyReport& report) {
+    const auto& cycles = *in.cycles;
+    const size_t m = cycles.size();
+    report.cycles_checked = m;
+    if (static_cast<long long>(m) != expected)
+        fails.add("cycles",
+                  "found " + std::to_string(m) + " cycles, expected 2g+h-1 = " + std::to_string(expected) + " (2g for a closed surface)");
+    uint32_t num_edges = 0;
+    const std::vector<uint32_t> edge_id = number_edges(out, num_edges);
+    std::vector<std::pair<uint32_t, uint32_t>> cross;
+    if (!collect_crossings(cycles, out, edge_id, fails, cross)) {
+        report.notes.push_back("cycles: independence not checked (a cycle is not a closed chain)");
+        return;
+    }
+    if (m == 0) return;
+    if (static_cast<long long>(m) > expected) {
+        report.notes.push_back("cycles: independence not checked (more cycles than the dimension of H1)");
+        return;
+    }
+    const EdgeParity parity(std::move(cross), num_edges, m);
+    const OutputTreeCotree tc = output_tree_cotree(out, edge_id, num_edges, report.boundary_loops > 0);
+    if (tc.root == kNo) return;
+    const std::vector<uint32_t>& leftovers = tc.leftovers;
+    if (static_cast<long long>(leftovers.size()) != expected) {
+        fails.add("cycles", "tree-cotree on the output gives " + std::to_string(leftovers.size()) + " generators, expected " +
+                                std::to_string(expected) + " (output is not a connected surface of the input's topology)");
+        return;
+    }
+    std::vector<Bits> rows = class_rows(out, tc, edge_id, parity);
+    const size_t W = parity.W;
     // Null-homologous cycles: zero column.
     Bits any(W, 0);
     for (const Bits& r : rows)
@@ -834,26 +932,26 @@ std::vector<Triangle> verify_decode_strip(const std::vector<uint32_t>& indices, 
     return gl_decode(indices, restart_index);
 }
 
-VerifyReport verify(const VerifyInput& in) {
-    const ToleranceScope tolerance(in.float32);
-    VerifyReport report;
-    Failures fails(report);
-    const size_t n = in.in_points.size();
-    const size_t F = in.out_faces.size();
-    report.input_faces = in.in_faces.size();
-    report.output_faces = F;
+namespace {
 
-    // ---- input sanity (the reference everything is compared with)
-    const Adjacency inp = build_adjacency(n, in.in_faces, "input");
-    if (!inp.manifold || in.in_faces.empty()) {
-        for (const auto& p : inp.problems) fails.add("input", p);
-        if (in.in_faces.empty()) fails.add("input", "no faces");
-        report.notes.push_back("input is not a valid manifold mesh; output not checked");
-        fails.finish();
-        return report;
+/// What the checks of the output read: the request, both adjacencies, each output face's
+/// parent (kNo when unknown), and where failures and findings go.
+struct Checked {
+    const VerifyInput& in;
+    const Adjacency& inp;
+    const Adjacency& out;
+    std::vector<uint32_t> parent;
+    Failures& fails;
+    VerifyReport& report;
+    [[nodiscard]] size_t num_faces() const { return in.out_faces.size(); }
+    [[nodiscard]] bool all_faces_ok() const {
+        return std::all_of(out.face_ok.begin(), out.face_ok.end(), [](bool b) { return b; });
     }
+};
 
-    // ---- original vertices unchanged
+// Input vertices unchanged (as a float32 file holds them), every coordinate finite.
+void check_vertices(const VerifyInput& in, Failures& fails, VerifyReport& report) {
+    const size_t n = in.in_points.size();
     if (in.out_points.size() < n) {
         fails.add("vertices",
                   "output has " + std::to_string(in.out_points.size()) + " vertices, fewer than the input's " + std::to_string(n));
@@ -874,30 +972,28 @@ VerifyReport verify(const VerifyInput& in) {
                 fails.add("vertices", "vertex " + std::to_string(v) + " has a non-finite coordinate");
                 break;
             }
-    if (F == 0) {
-        fails.add("faces", "output has no faces");
-        fails.finish();
-        return report;
-    }
+}
 
-    // ---- output topology
-    const Adjacency out = build_adjacency(in.out_points.size(), in.out_faces, "output");
+// The output's Euler characteristic and boundary loops are the input's.
+void check_topology(const Adjacency& inp, const Adjacency& out, Failures& fails, VerifyReport& report) {
     for (const auto& p : out.problems) fails.add("manifold", p);
     report.output_vertices = static_cast<size_t>(out.referenced_vertices);
     report.euler_characteristic = out.euler;
     report.boundary_loops = out.boundary_loops;
-    bool all_faces_ok = std::all_of(out.face_ok.begin(), out.face_ok.end(), [](bool b) { return b; });
     if (out.euler != inp.euler)
         fails.add("topology",
                   "Euler characteristic " + std::to_string(out.euler) + " differs from the input's " + std::to_string(inp.euler));
     if (out.boundary_loops != inp.boundary_loops)
         fails.add("topology",
                   std::to_string(out.boundary_loops) + " boundary loop(s), the input has " + std::to_string(inp.boundary_loops));
+}
 
-    // ---- parents
-    std::vector<uint32_t> parent;
+// Each output face's input parent: the given array, checked, or inferred from the geometry.
+std::vector<uint32_t> resolve_parents(const VerifyInput& in, const Adjacency& out, Failures& fails) {
+    const size_t n = in.in_points.size();
+    const size_t F = in.out_faces.size();
     if (!in.out_parent.empty()) {
-        parent = in.out_parent;
+        std::vector<uint32_t> parent = in.out_parent;
         if (parent.size() != F) {
             fails.add("parent", "parent array has " + std::to_string(parent.size()) + " entries for " + std::to_string(F) + " faces");
             parent.resize(F, kNo);
@@ -908,12 +1004,22 @@ VerifyReport verify(const VerifyInput& in) {
                                         std::to_string(in.in_faces.size()) + " input faces)");
                 parent[f] = kNo;
             }
-    } else {
-        const InputStars stars = build_stars(n, in.in_faces);
-        parent = infer_parents(in, out, stars, fails);
+        return parent;
     }
+    const InputStars stars = build_stars(n, in.in_faces);
+    return infer_parents(in, out, stars, fails);
+}
 
-    // ---- geometry per face, areas per parent
+// Every face lies inside its parent, in its plane, with its orientation; children's areas add
+// up to their parent's.
+void check_geometry(Checked& chk) {
+    const VerifyInput& in = chk.in;
+    const Adjacency& out = chk.out;
+    const std::vector<uint32_t>& parent = chk.parent;
+    Failures& fails = chk.fails;
+    VerifyReport& report = chk.report;
+    const size_t F = chk.num_faces();
+    const bool all_faces_ok = chk.all_faces_ok();
     std::vector<double> child_area(in.in_faces.size(), 0.0);
     size_t degenerate_parents_checked = 0;
     std::vector<uint32_t> child_count(in.in_faces.size(), 0);
@@ -984,8 +1090,18 @@ VerifyReport verify(const VerifyInput& in) {
     } else {
         report.notes.push_back("area sums not checked (some faces invalid or without parent)");
     }
+}
 
-    // ---- T-junctions: output boundary edges must tile the input boundary edges exactly
+// T-junctions: output boundary edges must tile the input boundary edges exactly. Runs even when
+// the output is not vertex-manifold: a T-junction leaves a crack that makes its corner vertices
+// non-manifold, and this check names the cause.
+void check_boundary_tiling(const Checked& chk) {
+    const VerifyInput& in = chk.in;
+    const Adjacency& inp = chk.inp;
+    const Adjacency& out = chk.out;
+    const std::vector<uint32_t>& parent = chk.parent;
+    Failures& fails = chk.fails;
+    const size_t F = chk.num_faces();
     // Runs even when the output is not vertex-manifold: a T-junction leaves a crack that makes
     // its corner vertices non-manifold, and this check names the cause.
     {
@@ -1072,10 +1188,18 @@ VerifyReport verify(const VerifyInput& in) {
                 fails.add("conformity", "input boundary edge (" + std::to_string(inp.from(ih)) + "," + std::to_string(inp.to(ih)) +
                                             ") is not covered by output boundary edges");
     }
+}
 
-    // ---- strips: one per edge-connected component of the output, each a contiguous run of faces
+// One strip per edge-connected component of the output, each a contiguous run of faces in which
+// consecutive faces share an edge; a new strip starts exactly where the component changes.
+// Returns the last face of each strip; `num_components` receives the output's components.
+std::vector<uint32_t> check_strips(const Checked& chk, size_t& num_components) {
+    const VerifyInput& in = chk.in;
+    const Adjacency& out = chk.out;
+    Failures& fails = chk.fails;
+    VerifyReport& report = chk.report;
+    const size_t F = chk.num_faces();
     // in which consecutive faces share an edge; a new strip starts exactly where the component changes.
-    size_t num_components = 0;
     const std::vector<uint32_t> comp = out_components(out, num_components);
     std::vector<uint32_t> strip_end;  // last face of each strip
     {
@@ -1102,8 +1226,14 @@ VerifyReport verify(const VerifyInput& in) {
         report.strips = strip_end.size();
         report.genus = (2 * static_cast<long long>(num_components) - out.euler - static_cast<long long>(out.boundary_loops)) / 2;
     }
+    return strip_end;
+}
 
-    // ---- index sequence
+// The index sequence decodes to exactly the output's faces, in order, with their winding.
+void check_indices(const Checked& chk) {
+    const VerifyInput& in = chk.in;
+    Failures& fails = chk.fails;
+    const size_t F = chk.num_faces();
     if (in.indices) {
         const auto& s = *in.indices;
         bool range_ok = true;
@@ -1127,8 +1257,17 @@ VerifyReport verify(const VerifyInput& in) {
                 }
         }
     }
+}
 
-    // ---- constraints
+// Constraint edges are input edges, never split, and never crossed between consecutive faces.
+void check_constraints(const Checked& chk) {
+    const VerifyInput& in = chk.in;
+    const Adjacency& inp = chk.inp;
+    const Adjacency& out = chk.out;
+    const std::vector<uint32_t>& parent = chk.parent;
+    Failures& fails = chk.fails;
+    const size_t n = in.in_points.size();
+    const size_t F = chk.num_faces();
     if (!in.constraints.empty()) {
         std::unordered_set<uint64_t> cset;
         for (size_t i = 0; i < in.constraints.size(); ++i) {
@@ -1187,8 +1326,13 @@ VerifyReport verify(const VerifyInput& in) {
             }
         }
     }
+}
 
-    // ---- source / target
+// The first face holds the source, the last face of the first strip the target.
+void check_source_target(const Checked& chk, uint32_t first_strip_end) {
+    const VerifyInput& in = chk.in;
+    Failures& fails = chk.fails;
+    const size_t n = in.in_points.size();
     auto has_vertex = [&](uint32_t f, uint32_t v) {
         const Triangle& t = in.out_faces[f];
         return t[0] == v || t[1] == v || t[2] == v;
@@ -1201,15 +1345,24 @@ VerifyReport verify(const VerifyInput& in) {
                       "first face 0 " + tri_str(in.out_faces[0]) + " does not contain source vertex " + std::to_string(*in.source));
     }
     if (in.target) {  // the end of the first strip (the whole output when there is one)
-        const uint32_t last = strip_end.front();
+        const uint32_t last = first_strip_end;
         if (*in.target >= n)
             fails.add("target", "target vertex " + std::to_string(*in.target) + " is not an input vertex");
         else if (!has_vertex(last, *in.target))
             fails.add("target", "last face " + std::to_string(last) + " " + tri_str(in.out_faces[last]) +
                                     " of the first strip does not contain target vertex " + std::to_string(*in.target));
     }
+}
 
-    // ---- cycles
+// The cycles: as many as the surface's rank and a basis (check_cycles) when the output is one
+// manifold component.
+void check_cycles_request(const Checked& chk, size_t num_components) {
+    const VerifyInput& in = chk.in;
+    const Adjacency& inp = chk.inp;
+    const Adjacency& out = chk.out;
+    Failures& fails = chk.fails;
+    VerifyReport& report = chk.report;
+    const bool all_faces_ok = chk.all_faces_ok();
     if (in.cycles) {
         const long long h = static_cast<long long>(inp.boundary_loops);
         const long long expected = h > 0 ? 1 - inp.euler : 2 - inp.euler;
@@ -1226,7 +1379,43 @@ VerifyReport verify(const VerifyInput& in) {
             check_cycles(in, out, expected, fails, report);
         }
     }
+}
 
+}  // namespace
+
+VerifyReport verify(const VerifyInput& in) {
+    const ToleranceScope tolerance(in.float32);
+    VerifyReport report;
+    Failures fails(report);
+    report.input_faces = in.in_faces.size();
+    report.output_faces = in.out_faces.size();
+
+    // The input is the reference everything is compared with.
+    const Adjacency inp = build_adjacency(in.in_points.size(), in.in_faces, "input");
+    if (!inp.manifold || in.in_faces.empty()) {
+        for (const auto& p : inp.problems) fails.add("input", p);
+        if (in.in_faces.empty()) fails.add("input", "no faces");
+        report.notes.push_back("input is not a valid manifold mesh; output not checked");
+        fails.finish();
+        return report;
+    }
+    check_vertices(in, fails, report);
+    if (in.out_faces.empty()) {
+        fails.add("faces", "output has no faces");
+        fails.finish();
+        return report;
+    }
+    const Adjacency out = build_adjacency(in.out_points.size(), in.out_faces, "output");
+    check_topology(inp, out, fails, report);
+    Checked chk{in, inp, out, resolve_parents(in, out, fails), fails, report};
+    check_geometry(chk);
+    check_boundary_tiling(chk);
+    size_t num_components = 0;
+    const std::vector<uint32_t> strip_end = check_strips(chk, num_components);
+    check_indices(chk);
+    check_constraints(chk);
+    check_source_target(chk, strip_end.front());
+    check_cycles_request(chk, num_components);
     fails.finish();
     return report;
 }

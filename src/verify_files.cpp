@@ -79,7 +79,8 @@ VerifyReport verify_files(TriangleSoup input, const std::string& out_path, const
     const std::vector<std::string> notes = replay_input_steps(vi, options.steps);
     if (options.indices_path) vi.indices = read_index_file(*options.indices_path);
     if (options.constraints_path)
-        vi.constraints = read_constraints_based(*options.constraints_path, static_cast<uint32_t>(vi.in_points.size()), options.index_base);
+        vi.constraints =
+            vertex_pairs(read_constraints_based(*options.constraints_path, static_cast<uint32_t>(vi.in_points.size()), options.index_base));
     vi.source = options.source;
     vi.target = options.target;
     vi.restart_index = options.restart_index;

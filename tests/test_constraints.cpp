@@ -145,8 +145,8 @@ TEST_P(Constraints, ThousandRandomCasesWithEndpoints) {
         const int mode = i % 4;  // constraints, endpoints, both, both with source == target
         if (mode != 1) o.constraint_edges = random_polylines(soup, rng, 1 + rng() % 4, 12);
         if (mode != 0) {
-            o.source = soup.triangles[rng() % soup.triangles.size()][rng() % 3];
-            o.target = mode == 3 ? *o.source : soup.triangles[rng() % soup.triangles.size()][rng() % 3];
+            o.source = VertexId(soup.triangles[rng() % soup.triangles.size()][rng() % 3]);
+            o.target = VertexId(mode == 3 ? o.source->idx() : soup.triangles[rng() % soup.triangles.size()][rng() % 3]);
         }
         SCOPED_TRACE(name + " case " + std::to_string(i));
         const size_t pieces = pieces_after_cutting(soup, o.constraint_edges);
@@ -185,8 +185,8 @@ TEST_P(Constraints, LoopsAroundTorusHandles) {
                                   }()}) {
         StripOptions o = opts();
         o.constraint_edges = loops;
-        o.source = id(3, 3);
-        o.target = id(8, 5);
+        o.source = VertexId(id(3, 3));
+        o.target = VertexId(id(8, 5));
         const auto c = strip_and_verify(torus, o);
         EXPECT_TRUE(c.report.ok()) << describe(c);
     }
@@ -227,12 +227,12 @@ TEST_P(Endpoints, BadVerticesAreRequestErrors) {
     TriangleSoup s = make_grid_disk(2, 2);
     s.points.push_back({5, 5, 5});  // unreferenced vertex
     StripOptions o = opts();
-    o.source = 1000;
+    o.source = VertexId(1000);
     EXPECT_THROW(build_strip(Mesh::from_soup(s), o), RequestError);
-    o.source = static_cast<uint32_t>(s.points.size() - 1);
+    o.source = VertexId(static_cast<uint32_t>(s.points.size() - 1));
     EXPECT_THROW(build_strip(Mesh::from_soup(s), o), RequestError);
     StripOptions t = opts();
-    t.target = static_cast<uint32_t>(s.points.size() - 1);
+    t.target = VertexId(static_cast<uint32_t>(s.points.size() - 1));
     EXPECT_THROW(build_strip(Mesh::from_soup(s), t), RequestError);
 }
 
@@ -241,8 +241,8 @@ TEST_P(Endpoints, EveryVertexPairOfASmallMesh) {
     for (uint32_t s = 0; s < soup.points.size(); s += 3)
         for (uint32_t t = 0; t < soup.points.size(); t += 2) {
             StripOptions o = opts();
-            o.source = s;
-            o.target = t;
+            o.source = VertexId(s);
+            o.target = VertexId(t);
             o.validate_each_split = true;
             const auto c = strip_and_verify(soup, o);
             EXPECT_TRUE(c.report.ok()) << s << " -> " << t << ": " << describe(c);
@@ -258,8 +258,8 @@ TEST_P(ConstraintsReal, RandomConstraintsAndEndpointsOnRealMeshes) {
         for (int i = 0; i < 8; ++i) {
             StripOptions o = opts();
             o.constraint_edges = random_polylines(soup, rng, 1 + rng() % 6, 40);
-            o.source = soup.triangles[rng() % soup.triangles.size()][0];
-            o.target = soup.triangles[rng() % soup.triangles.size()][1];
+            o.source = VertexId(soup.triangles[rng() % soup.triangles.size()][0]);
+            o.target = VertexId(soup.triangles[rng() % soup.triangles.size()][1]);
             const size_t pieces = pieces_after_cutting(soup, o.constraint_edges);
             if (pieces > 1) {
                 EXPECT_THROW(build_strip(Mesh::from_soup(soup), o), RequestError);
@@ -276,8 +276,8 @@ TEST_P(Endpoints, TargetWhoseOnlyFaceIsTheFirstFace) {
     const TriangleSoup soup = make_grid_disk(3, 3);
     for (uint32_t v = 0; v < soup.points.size(); ++v) {
         StripOptions o = opts();
-        o.source = v;
-        o.target = v;
+        o.source = VertexId(v);
+        o.target = VertexId(v);
         const auto c = strip_and_verify(soup, o);
         EXPECT_TRUE(c.report.ok()) << v << ": " << describe(c);
     }
@@ -295,8 +295,8 @@ TEST_P(Constraints, CyclesAreTheSurfacesWithConstraintsAndEndpoints) {
         if (variant & 1)
             for (uint32_t j = 0; j < nn; ++j) o.constraint_edges.push_back({id(0, j), id(0, j + 1)});
         if (variant & 2) {
-            o.source = id(3, 3);
-            o.target = id(9, 2);
+            o.source = VertexId(id(3, 3));
+            o.target = VertexId(id(9, 2));
         }
         auto c = strip_and_verify(torus, o);
         ASSERT_TRUE(c.report.ok()) << describe(c);
@@ -320,11 +320,11 @@ TEST_P(Endpoints, SourceAloneOrTargetAlone) {
                                      std::pair{"disk with holes", make_disk_with_holes(1, 2)}}) {
         for (uint32_t v = 0; v < soup.points.size(); ++v) {
             StripOptions s = opts();
-            s.source = v;
+            s.source = VertexId(v);
             const auto from = strip_and_verify(soup, s);
             EXPECT_TRUE(from.report.ok()) << name << " source " << v << ": " << describe(from);
             StripOptions t = opts();
-            t.target = v;
+            t.target = VertexId(v);
             const auto to = strip_and_verify(soup, t);
             EXPECT_TRUE(to.report.ok()) << name << " target " << v << ": " << describe(to);
         }

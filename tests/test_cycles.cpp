@@ -172,7 +172,7 @@ void expect_closed_chains(const StripResult& r, const Cycles& c, const std::stri
         for (size_t k = 0; k < cyc.size(); ++k) {
             ASSERT_LT(cyc[k], r.order.size());
             const uint32_t f = r.order[cyc[k]], g = r.order[cyc[(k + 1) % cyc.size()]];
-            EXPECT_NE(r.mesh.shared_halfedge(f, g), kNone) << what << " cycle " << i << " step " << k;
+            EXPECT_NE(r.mesh.shared_halfedge(FaceId(f), FaceId(g)).idx(), kNone) << what << " cycle " << i << " step " << k;
         }
         EXPECT_GT(c.lengths[i], 0.0) << what;
         EXPECT_TRUE(std::isfinite(c.lengths[i])) << what;
@@ -212,8 +212,8 @@ Outcome check_surface(const TriangleSoup& soup, long long genus, long long loops
         in.out_parent = a.parent;
         in.indices = encode_triangle_strip(a.faces);
         in.constraints = opt.constraint_edges;
-        in.source = opt.source;
-        in.target = opt.target;
+        in.source = index_of(opt.source);
+        in.target = index_of(opt.target);
         in.cycles = c->cycles;
         const VerifyReport rep = verify(in);
         if (!degenerate_geometry) {
@@ -309,7 +309,7 @@ TEST_P(StripCycles, ClosedSurfaceAnySeedFace) {
     const TriangleSoup s = make_genus_surface(2, 2);
     for (uint32_t seed : {0u, 17u, 101u}) {
         StripOptions opt = opts();
-        opt.seed_face = seed;
+        opt.seed_face = FaceId(seed);
         check_surface(s, 2, 0, "genus 2, seed face " + std::to_string(seed), opt);
     }
 }
@@ -322,12 +322,12 @@ TEST_P(StripCycles, InteriorSeedStillClosedChains) {
     uint32_t interior = kNone;
     for (uint32_t f = 0; f < mesh.num_faces() && interior == kNone; ++f) {
         bool b = false;
-        for (uint32_t k = 0; k < 3; ++k) b = b || mesh.is_boundary(Mesh::halfedge(f, k));
+        for (uint32_t k = 0; k < 3; ++k) b = b || mesh.is_boundary(Mesh::halfedge(FaceId(f), k));
         if (!b && f > 20) interior = f;
     }
     ASSERT_NE(interior, kNone);
     StripOptions opt = opts();
-    opt.seed_face = interior;
+    opt.seed_face = FaceId(interior);
     const auto check = singlestrip::testing::strip_and_verify(s, opt);
     EXPECT_TRUE(check.report.ok()) << singlestrip::testing::describe(check);
     const StripResult& r = check.result;
@@ -360,11 +360,11 @@ TEST(CycleTools, SecondOpinionDetectsDependence) {
     EXPECT_EQ(z2_rank(s.points, s.triangles, gens).rank, 2u);
     // Star of vertex 0 in rotation order.
     std::vector<uint32_t> star;
-    const uint32_t h0 = m.vertex_halfedge(0);
+    const uint32_t h0 = m.vertex_halfedge(VertexId(0)).idx();
     uint32_t h = h0;
     do {
-        star.push_back(Mesh::face(h));
-        h = m.twin(Mesh::prev(h));  // next outgoing half-edge around vertex 0
+        star.push_back(Mesh::face(HalfedgeId(h)).idx());
+        h = m.twin(Mesh::prev(HalfedgeId(h))).idx();  // next outgoing half-edge around vertex 0
     } while (h != h0 && h != kNone);
     const RankCheck rc = z2_rank(s.points, s.triangles, {star});
     EXPECT_TRUE(rc.chains_ok) << rc.problem;

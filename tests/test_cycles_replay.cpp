@@ -53,9 +53,9 @@ StripResult strip_for(const TriangleSoup& soup, Variant v, StripOptions opt) {
 bool first_face_touches_boundary(const StripResult& r) {
     std::vector<uint8_t> on_boundary(r.mesh.num_vertices(), 0);
     for (uint32_t h = 0; h < r.mesh.num_halfedges(); ++h)
-        if (r.mesh.is_boundary(h)) on_boundary[r.mesh.from(h)] = 1;
+        if (r.mesh.is_boundary(HalfedgeId(h))) on_boundary[r.mesh.from(HalfedgeId(h)).idx()] = 1;
     for (uint32_t k = 0; k < 3; ++k)
-        if (on_boundary[r.mesh.from(Mesh::halfedge(r.order.front(), k))]) return true;
+        if (on_boundary[r.mesh.from(Mesh::halfedge(FaceId(r.order.front()), k)).idx()]) return true;
     return false;
 }
 
@@ -72,7 +72,7 @@ void expect_closed_chains(const StripResult& r, const Cycles& c, const std::stri
         for (size_t k = 0; k < cyc.size(); ++k) {
             ASSERT_LT(cyc[k], r.order.size()) << what;
             const uint32_t f = r.order[cyc[k]], g = r.order[cyc[(k + 1) % cyc.size()]];
-            EXPECT_NE(r.mesh.shared_halfedge(f, g), kNone) << what << " cycle " << i << " step " << k;
+            EXPECT_NE(r.mesh.shared_halfedge(FaceId(f), FaceId(g)).idx(), kNone) << what << " cycle " << i << " step " << k;
         }
     }
 }
@@ -183,12 +183,12 @@ TEST(CyclesReplay, InteriorSeedOnSurfaceWithBoundary) {
     uint32_t interior = kNone;
     for (uint32_t f = 21; f < mesh.num_faces() && interior == kNone; ++f) {
         bool b = false;
-        for (uint32_t k = 0; k < 3; ++k) b = b || mesh.is_boundary(Mesh::halfedge(f, k));
+        for (uint32_t k = 0; k < 3; ++k) b = b || mesh.is_boundary(Mesh::halfedge(FaceId(f), k));
         if (!b) interior = f;
     }
     ASSERT_NE(interior, kNone);
     StripOptions opt;
-    opt.seed_face = interior;
+    opt.seed_face = FaceId(interior);
     check_surface(s, 0, 3, "disk with 2 holes, interior seed", opt);
 }
 
@@ -196,7 +196,7 @@ TEST(CyclesReplay, ClosedSurfaceAnySeed) {
     const TriangleSoup s = make_genus_surface(2, 2);
     for (uint32_t seed : {0u, 17u, 101u}) {
         StripOptions opt;
-        opt.seed_face = seed;
+        opt.seed_face = FaceId(seed);
         check_surface(s, 2, 0, "genus 2, seed face " + std::to_string(seed), opt);
     }
 }
@@ -214,8 +214,8 @@ TEST(CyclesReplay, WithConstraints) {
 TEST(CyclesReplay, WithSourceAndTarget) {
     const TriangleSoup s = make_genus_with_holes(2, 2, 3);
     StripOptions opt;
-    opt.source = 0;
-    opt.target = static_cast<uint32_t>(s.points.size() / 2);
+    opt.source = VertexId(0);
+    opt.target = VertexId(static_cast<uint32_t>(s.points.size() / 2));
     check_surface(s, 2, 2, "genus 2 with 2 holes, source and target", opt);
 }
 

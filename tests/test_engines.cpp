@@ -175,10 +175,10 @@ std::string describe_case(const Case& c, int index) {
     std::ostringstream os;
     os << "case " << index << " [" << engine_name(c.options.engine) << "]: " << c.recipe << "; F=" << c.soup.triangles.size()
        << " V=" << c.soup.points.size();
-    if (c.options.seed_face) os << "; seed face " << *c.options.seed_face;
+    if (c.options.seed_face) os << "; seed face " << c.options.seed_face->idx();
     if (!c.options.greedy) os << "; no greedy";
-    if (c.options.source) os << "; source " << *c.options.source;
-    if (c.options.target) os << "; target " << *c.options.target;
+    if (c.options.source) os << "; source " << c.options.source->idx();
+    if (c.options.target) os << "; target " << c.options.target->idx();
     if (!c.walls.empty()) os << "; constraint polylines:" << polylines_text(c.walls);
     return os.str();
 }
@@ -298,26 +298,26 @@ Case random_case(std::mt19937_64& rng, StripEngine engine, uint32_t scale) {
     c.options.engine = engine;
     c.options.greedy = rng() % 5 != 0;
     if (rng() % 2) add_connected_walls(c.soup, c.walls, static_cast<int>(between(rng, 1, 5)), between(rng, 1, 12), rng);
-    if (rng() % 2) c.options.seed_face = static_cast<uint32_t>(rng() % nf);
+    if (rng() % 2) c.options.seed_face = FaceId(static_cast<uint32_t>(rng() % nf));
     switch (rng() % 5) {
         case 0:
             break;
         case 1:
-            c.options.source = c.soup.triangles[rng() % nf][rng() % 3];
+            c.options.source = VertexId(c.soup.triangles[rng() % nf][rng() % 3]);
             break;
         case 2:
-            c.options.target = c.soup.triangles[rng() % nf][rng() % 3];
+            c.options.target = VertexId(c.soup.triangles[rng() % nf][rng() % 3]);
             break;
         case 3:
-            c.options.source = c.soup.triangles[rng() % nf][rng() % 3];
-            c.options.target = c.soup.triangles[rng() % nf][rng() % 3];
+            c.options.source = VertexId(c.soup.triangles[rng() % nf][rng() % 3]);
+            c.options.target = VertexId(c.soup.triangles[rng() % nf][rng() % 3]);
             break;
         default:
-            c.options.source = c.options.target = c.soup.triangles[rng() % nf][rng() % 3];
+            c.options.source = c.options.target = VertexId(c.soup.triangles[rng() % nf][rng() % 3]);
             break;
     }
     // A seed face must touch the source (strip.hpp): take a corner of it as the source.
-    if (c.options.seed_face && c.options.source) c.options.source = c.soup.triangles[*c.options.seed_face][rng() % 3];
+    if (c.options.seed_face && c.options.source) c.options.source = VertexId(c.soup.triangles[c.options.seed_face->idx()][rng() % 3]);
     if (rng() % 25 == 0) {
         const std::vector<uint32_t> inner = interior_vertices(c.soup);
         if (!inner.empty()) {
@@ -434,13 +434,13 @@ TEST_P(Engines, AwkwardFamilies) {
             shuffle_faces(s, seed + 1);
             for (auto& [a, b] : o.constraint_edges) a = moved[a], b = moved[b];
             const uint32_t nf = static_cast<uint32_t>(s.triangles.size());
-            o.seed_face = static_cast<uint32_t>(rng() % nf);
-            o.source = s.triangles[*o.seed_face][0];
-            o.target = s.triangles[rng() % nf][1];
+            o.seed_face = FaceId(static_cast<uint32_t>(rng() % nf));
+            o.source = VertexId(s.triangles[o.seed_face->idx()][0]);
+            o.target = VertexId(s.triangles[rng() % nf][1]);
             expect_verified(s, o,
                             name + " + shuffle_vertices(" + std::to_string(seed) + ") + shuffle_faces(+1), seed face " +
-                                std::to_string(*o.seed_face) + ", source " + std::to_string(*o.source) + ", target " +
-                                std::to_string(*o.target));
+                                std::to_string(o.seed_face->idx()) + ", source " + std::to_string(o.source->idx()) + ", target " +
+                                std::to_string(o.target->idx()));
         }
     }
 }
@@ -458,16 +458,16 @@ TEST_P(Engines, AwkwardFamiliesByParameters) {
                 StripOptions o = opts();
                 o.constraint_edges = polyline_edges(m.walls);
                 expect_verified(m.soup, o, name + tag);
-                o.source = o.target = m.walls.back().back();  // a wall's end
-                expect_verified(m.soup, o, name + tag + " source = target = " + std::to_string(*o.source));
+                o.source = o.target = VertexId(m.walls.back().back());  // a wall's end
+                expect_verified(m.soup, o, name + tag + " source = target = " + std::to_string(o.source->idx()));
             }
         }
     for (uint32_t bx : {1u, 3u}) {
         const TriangleSoup s = make_disk_many_holes(bx, 2);
         expect_verified(s, opts(), "make_disk_many_holes(" + std::to_string(bx) + ", 2)");
         StripOptions o = opts();
-        o.source = o.target = s.triangles[s.triangles.size() / 2][0];
-        expect_verified(s, o, "make_disk_many_holes(" + std::to_string(bx) + ", 2) source = target = " + std::to_string(*o.source));
+        o.source = o.target = VertexId(s.triangles[s.triangles.size() / 2][0]);
+        expect_verified(s, o, "make_disk_many_holes(" + std::to_string(bx) + ", 2) source = target = " + std::to_string(o.source->idx()));
     }
     for (uint32_t nx : {1u, 2u, 7u, 40u})
         for (uint32_t ny : {1u, 3u}) {
@@ -475,9 +475,9 @@ TEST_P(Engines, AwkwardFamiliesByParameters) {
             const std::string tag = "make_eared_grid(" + std::to_string(nx) + ", " + std::to_string(ny) + ")";
             expect_verified(s, opts(), tag);
             StripOptions o = opts();
-            o.source = static_cast<uint32_t>(s.points.size() - 1);  // the last ear's tip
-            o.target = static_cast<uint32_t>(s.points.size() - 3);  // the one before
-            expect_verified(s, o, tag + " source " + std::to_string(*o.source) + " target " + std::to_string(*o.target));
+            o.source = VertexId(static_cast<uint32_t>(s.points.size() - 1));  // the last ear's tip
+            o.target = VertexId(static_cast<uint32_t>(s.points.size() - 3));  // the one before
+            expect_verified(s, o, tag + " source " + std::to_string(o.source->idx()) + " target " + std::to_string(o.target->idx()));
         }
 }
 
@@ -490,10 +490,10 @@ TEST_P(Engines, HighValenceVertices) {
         const std::string what = std::string(name) + " k=" + std::to_string(k);
         expect_verified(soup, opts(), what);
         StripOptions o = opts();
-        o.source = 0;
-        o.target = 0;
+        o.source = VertexId(0);
+        o.target = VertexId(0);
         expect_verified(soup, o, what + " source = target = apex");
-        o.source = 1;
+        o.source = VertexId(1);
         expect_verified(soup, o, what + " source 1, target apex");
         // The apex's faces scattered through the input (file order must not matter).
         TriangleSoup shuffled = soup;

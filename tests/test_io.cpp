@@ -316,9 +316,11 @@ TEST(WriteMesh, IndicesAreSixteenPerLine) {
 }
 
 TEST(Constraints, PolylinesBecomeConsecutivePairs) {
-    auto pairs = read_constraints(data("constraints_ok.txt"), 4);
-    const std::vector<std::pair<uint32_t, uint32_t>> want = {{0, 1}, {1, 2}, {3, 0}};
-    EXPECT_EQ(pairs, want);
+    const auto edges = read_constraints(data("constraints_ok.txt"), 4);
+    const std::vector<ConstraintEdge> want = {{0, 1, 2}, {1, 2, 2}, {3, 0, 4}};
+    EXPECT_EQ(edges, want);
+    const std::vector<std::pair<uint32_t, uint32_t>> want_pairs = {{0, 1}, {1, 2}, {3, 0}};
+    EXPECT_EQ(vertex_pairs(edges), want_pairs);
 }
 
 TEST(Constraints, ErrorsNameFileAndLine) {

@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 
 #include <random>
+#include <type_traits>
+#include <unordered_set>
 
 #include "singlestrip/errors.hpp"
 #include "singlestrip/generators.hpp"
@@ -10,10 +12,10 @@
 using namespace singlestrip;
 
 namespace {
-double area(const Mesh& m, uint32_t f) {
-    const auto& a = m.position(m.from(3 * f));
-    const auto& b = m.position(m.from(3 * f + 1));
-    const auto& c = m.position(m.from(3 * f + 2));
+double area(const Mesh& m, FaceId f) {
+    const auto& a = m.position(m.from(Mesh::halfedge(f, 0)));
+    const auto& b = m.position(m.from(Mesh::halfedge(f, 1)));
+    const auto& c = m.position(m.from(Mesh::halfedge(f, 2)));
     const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
     const double v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
     const double x = u[1] * v[2] - u[2] * v[1], y = u[2] * v[0] - u[0] * v[2], z = u[0] * v[1] - u[1] * v[0];
@@ -76,36 +78,59 @@ TEST(Mesh, RandomSplitsKeepEveryInvariant) {
         const long long chi = m.euler_characteristic();
         const uint32_t loops = m.num_boundary_loops();
         std::vector<double> parent_area(m.num_faces());
-        for (uint32_t f = 0; f < m.num_faces(); ++f) parent_area[f] = area(m, f);
+        for (const FaceId f : m.faces()) parent_area[f.idx()] = area(m, f);
         for (int i = 0; i < 300; ++i) {
-            uint32_t h;
-            do h = rng() % m.num_halfedges();
+            HalfedgeId h;
+            do h = HalfedgeId(static_cast<uint32_t>(rng() % m.num_halfedges()));
             while (m.is_boundary(h));
-            const uint32_t a = m.from(h), b = m.to(h);
+            const VertexId a = m.from(h), b = m.to(h);
             const uint32_t nf = m.num_faces(), nv = m.num_vertices();
             const SplitResult s = m.split_edge(h);
             m.validate();
             EXPECT_EQ(m.num_faces(), nf + 2);
             EXPECT_EQ(m.num_vertices(), nv + 1);
-            EXPECT_EQ(s.vertex, nv);
+            EXPECT_EQ(s.vertex, VertexId(nv));
             for (int k = 0; k < 3; ++k) EXPECT_DOUBLE_EQ(m.position(s.vertex)[k], 0.5 * (m.position(a)[k] + m.position(b)[k]));
             EXPECT_EQ(m.parent(s.f_a), m.parent(s.f_b));
             EXPECT_EQ(m.parent(s.g_a), m.parent(s.g_b));
-            EXPECT_NE(m.shared_halfedge(s.f_a, s.g_a), kNone);
-            EXPECT_NE(m.shared_halfedge(s.f_b, s.g_b), kNone);
-            EXPECT_NE(m.shared_halfedge(s.f_a, s.f_b), kNone);
-            EXPECT_NE(m.shared_halfedge(s.g_a, s.g_b), kNone);
+            EXPECT_TRUE(m.shared_halfedge(s.f_a, s.g_a).valid());
+            EXPECT_TRUE(m.shared_halfedge(s.f_b, s.g_b).valid());
+            EXPECT_TRUE(m.shared_halfedge(s.f_a, s.f_b).valid());
+            EXPECT_TRUE(m.shared_halfedge(s.g_a, s.g_b).valid());
         }
         EXPECT_EQ(m.euler_characteristic(), chi);
         EXPECT_EQ(m.num_boundary_loops(), loops);
         // Children tile their parents: areas add up.
         std::vector<double> sum(parent_area.size(), 0.0);
-        for (uint32_t f = 0; f < m.num_faces(); ++f) sum[m.parent(f)] += area(m, f);
+        for (const FaceId f : m.faces()) sum[m.parent(f).idx()] += area(m, f);
         for (size_t p = 0; p < sum.size(); ++p) EXPECT_NEAR(sum[p], parent_area[p], 1e-9 * (1 + parent_area[p]));
     }
 }
 
 TEST(Mesh, SplitOfABoundaryEdgeIsAnInternalError) {
     Mesh m = Mesh::from_soup(make_single_triangle());
-    EXPECT_THROW(m.split_edge(0), InternalError);
+    EXPECT_THROW(m.split_edge(HalfedgeId(0)), InternalError);
+    m.validate();  // a refused split leaves the mesh as it was
+}
+
+TEST(Ids, AreFlatTypedIndicesWithOneNone) {
+    static_assert(sizeof(FaceId) == sizeof(uint32_t) && std::is_trivially_copyable_v<FaceId>);
+    static_assert(!std::is_convertible_v<uint32_t, FaceId>, "an index becomes an id only explicitly");
+    static_assert(!std::is_convertible_v<FaceId, uint32_t>, "idx() reads it back");
+    static_assert(!std::is_convertible_v<FaceId, HalfedgeId> && !std::is_convertible_v<VertexId, FaceId>);
+    EXPECT_FALSE(FaceId().valid());
+    EXPECT_EQ(FaceId(), kNone);
+    const HalfedgeId none = kNone;
+    EXPECT_EQ(none.idx(), 0xffffffffu);
+    EXPECT_TRUE(VertexId(0).valid());
+    EXPECT_LT(VertexId(1), VertexId(2));
+    const std::unordered_set<VertexId> set{VertexId(1), VertexId(1), VertexId(2)};
+    EXPECT_EQ(set.size(), 2u);
+    const Mesh m = Mesh::from_soup(make_torus(6, 4));
+    uint32_t n = 0;
+    for (const FaceId f : m.faces()) {
+        EXPECT_EQ(f.idx(), n++);
+        for (uint32_t k = 0; k < 3; ++k) EXPECT_EQ(Mesh::face(Mesh::halfedge(f, k)), f);
+    }
+    EXPECT_EQ(n, m.num_faces());
 }

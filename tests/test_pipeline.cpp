@@ -53,7 +53,7 @@ TEST(Pipeline, StageTellsWhereItStopped) {
     }
     EXPECT_EQ(stage, PipelineStage::Checks);
 
-    o.strip.seed_face = 1000;
+    o.strip.seed_face = FaceId(1000);
     EXPECT_THROW(stripify(make_torus(6, 4), o, &stage), RequestError);
     EXPECT_EQ(stage, PipelineStage::Strip);
     EXPECT_STREQ(stage_name(stage), "build_strip");
@@ -84,7 +84,7 @@ TEST(Pipeline, ReadInputKnowsTheBuiltInModel) {
 TEST(Report, KeysOfAResultAndOfAFailedRun) {
     PipelineOptions o;
     o.strip.engine = StripEngine::Growth;
-    o.strip.source = 0;
+    o.strip.source = VertexId(0);
     o.cycles = true;
     const PipelineResult r = stripify(make_torus(8, 6), o);
     ReportInput in;

@@ -145,8 +145,8 @@ TEST(Render, ConstrainedStripWithSplitsCoversTheInput) {
     const TriangleSoup soup = prepare_soup(make_torus(24, 12), {}, "torus");
     StripOptions opt;
     for (uint32_t k = 0; k + 1 < 12; ++k) opt.constraint_edges.emplace_back(k, k + 1);  // part of a minor circle
-    opt.source = 30;
-    opt.target = 200;
+    opt.source = VertexId(30);
+    opt.target = VertexId(200);
     const StripResult r = build_strip(Mesh::from_soup(soup), opt);
     const StripArrays a = strip_arrays(r);
     ASSERT_GT(r.stats.splits, 0u);

@@ -42,8 +42,8 @@ VerifyReport strip_and_verify(const TriangleSoup& soup, PipelineOptions o, Pipel
     vi.out_parent = r.arrays.parent;
     vi.indices = r.indices;
     vi.restart_index = o.restart_index;
-    vi.source = o.strip.source;
-    vi.target = o.strip.target;
+    vi.source = index_of(o.strip.source);
+    vi.target = index_of(o.strip.target);
     vi.constraints = o.strip.constraint_edges;
     const auto notes = replay_input_steps(vi, {o.weld, o.repair, o.orient});
     VerifyReport rep = verify(vi);
@@ -199,11 +199,11 @@ TEST(Components, OneStripPerComponentWithEitherJoin) {
     // source and target pick the first strip; in two components they are refused by name.
     PipelineOptions o;
     const uint32_t torus_vertex = static_cast<uint32_t>(make_icosphere(1).points.size()) + 3;
-    o.strip.source = torus_vertex;
+    o.strip.source = VertexId(torus_vertex);
     PipelineResult r;
     EXPECT_TRUE(strip_and_verify(s, o, &r).ok());
     EXPECT_EQ(r.components[0].input_triangles, make_torus(8, 5).triangles.size());
-    o.strip.target = 0;
+    o.strip.target = VertexId(0);
     try {
         stripify(s, o);
         ADD_FAILURE() << "source and target in different components";

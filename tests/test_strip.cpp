@@ -104,7 +104,7 @@ TEST_P(Strip, EverySeedFaceOfSmallMeshes) {
     for (const auto& fam : {make_grid_disk(5, 5), make_torus(6, 4), make_disk_with_holes(2, 2), make_genus_surface(2, 1)}) {
         for (uint32_t f = 0; f < fam.triangles.size(); ++f) {
             StripOptions o = opts();
-            o.seed_face = f;
+            o.seed_face = FaceId(f);
             o.validate_each_split = true;
             expect_one_strip(fam, "seed " + std::to_string(f), o);
         }
@@ -166,7 +166,7 @@ TEST_P(Strip, ThousandsOfRandomMeshes) {
             }
         }
         StripOptions o = opts();
-        if (rng() % 2) o.seed_face = static_cast<uint32_t>(rng() % soup.triangles.size());
+        if (rng() % 2) o.seed_face = FaceId(static_cast<uint32_t>(rng() % soup.triangles.size()));
         o.greedy = rng() % 5 != 0;
         o.validate_each_split = i % 2 == 0;  // also checks the matching engine's matching
         SCOPED_TRACE(name + " case " + std::to_string(i));
@@ -187,7 +187,7 @@ TEST_P(Strip, SplitsStayBelowThePapersOnSyntheticDisks) {
 
 TEST_P(Strip, BadSeedFaceIsARequestError) {
     StripOptions o = opts();
-    o.seed_face = 99;
+    o.seed_face = FaceId(99);
     EXPECT_THROW(build_strip(Mesh::from_soup(make_two_triangles()), o), RequestError);
 }
 

@@ -47,7 +47,7 @@ struct BatchOptions {
     bool repair = false;                         ///< PipelineOptions::repair
     JoinMode join = JoinMode::Degenerate;        ///< PipelineOptions::join
     uint32_t restart_index = 0xffffffffu;        ///< PipelineOptions::restart_index
-    std::optional<uint32_t> seed_face;           ///< applied to every file (out of range: that file fails)
+    std::optional<FaceId> seed_face;             ///< applied to every file (out of range: that file fails)
     unsigned threads = 0;                        ///< 0 = std::thread::hardware_concurrency()
     bool progress = true;                        ///< progress bar on stderr, only when it is a terminal
 };

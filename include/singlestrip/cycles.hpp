@@ -81,7 +81,6 @@
 #pragma once
 
 #include <cstdint>
-#include <string>
 #include <vector>
 
 #include "singlestrip/strip.hpp"
@@ -128,13 +127,9 @@ double cycle_length(const StripArrays& arrays, const std::vector<uint32_t>& cycl
 /// back to c0 is implicit).
 std::vector<Point3> cycle_polyline(const StripArrays& arrays, const std::vector<uint32_t>& cycle);
 
-/// Writes {"cycles": [[face, ...], ...], "lengths": [...]} atomically (temporary + rename).
-/// \throw OutputError if the file cannot be written.
-void write_cycles_json(const std::string& path, const Cycles& cycles);
-
-/// Writes each cycle as a closed OBJ polyline (`v` lines, then one `l` line per cycle whose last
-/// index repeats its first) through face centroids and shared-edge midpoints, atomically.
-/// \throw OutputError if the file cannot be written.
-void write_cycles_obj(const std::string& path, const StripArrays& arrays, const Cycles& cycles);
+/// Tree–cotree generators (tree_cotree.hpp) of result.mesh indexed in strip order, with their
+/// lengths (cycle_length() on strip_arrays(result)), directly comparable to
+/// compute_fundamental_cycles(). Cycles::sources stays empty.
+Cycles tree_cotree_cycles(const StripResult& result);
 
 }  // namespace singlestrip

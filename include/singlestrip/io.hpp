@@ -31,6 +31,7 @@
 #include <utility>
 #include <vector>
 
+#include "singlestrip/cycles.hpp"
 #include "singlestrip/soup.hpp"
 
 namespace singlestrip {
@@ -64,14 +65,23 @@ struct ReadOptions {
 /// count the file declares.
 TriangleSoup read_mesh_file(const std::string& path, const ReadOptions& options = {});
 
+/// One constraint edge as read from a file: its two vertex numbers and the file line it is on.
+struct ConstraintEdge {
+    uint32_t a = 0, b = 0;
+    uint32_t line = 0;
+    friend bool operator==(const ConstraintEdge&, const ConstraintEdge&) = default;
+};
+
 /// Reads a constraint file: one polyline per line, written as whitespace-separated input vertex
 /// indices (0-based); '#' starts a comment; blank lines are ignored. A polyline a b c yields the
 /// vertex pairs (a,b), (b,c), in file order. Whether a pair is a mesh edge is checked by the
 /// strip builder (RequestError), not here.
 /// \throw InputError naming the file and line for a missing/unreadable file, a token that is
 ///        not a non-negative integer, a polyline with a single vertex, or an index >= num_vertices.
-std::vector<std::pair<uint32_t, uint32_t>> read_constraints(const std::string& path, uint32_t num_vertices,
-                                                            std::vector<uint32_t>* line_of_pair = nullptr);
+std::vector<ConstraintEdge> read_constraints(const std::string& path, uint32_t num_vertices);
+
+/// The vertex pairs of `edges`, in order (StripOptions::constraint_edges).
+std::vector<std::pair<uint32_t, uint32_t>> vertex_pairs(const std::vector<ConstraintEdge>& edges);
 
 /// Vertex numbering chosen by the user (`--index-base`): 0 (the default, the numbering of every
 /// output file and of the library) or 1 (OBJ's own numbering). Returns `number - base`.
@@ -82,8 +92,7 @@ uint32_t from_index_base(uint32_t number, uint32_t base, const std::string& what
 /// read_constraints() for a file whose vertex numbers start at `index_base` (0 or 1); the pairs
 /// returned are 0-based. \throw InputError as read_constraints(), naming the file, the line and
 /// the number for a 0 in a 1-based file or a number above the vertex count. O(file size).
-std::vector<std::pair<uint32_t, uint32_t>> read_constraints_based(const std::string& path, uint32_t num_vertices, uint32_t index_base,
-                                                                  std::vector<uint32_t>* line_of_pair = nullptr);
+std::vector<ConstraintEdge> read_constraints_based(const std::string& path, uint32_t num_vertices, uint32_t index_base);
 
 /// Refuses outputs that would overwrite an input or each other: two entries of `outputs` naming
 /// the same file (same path after normalisation, or the same existing file through a link), or
@@ -93,11 +102,9 @@ std::vector<std::pair<uint32_t, uint32_t>> read_constraints_based(const std::str
 void refuse_overwrites(const std::vector<std::pair<std::string, std::string>>& inputs,
                        const std::vector<std::pair<std::string, std::string>>& outputs);
 
-/// Checks that every constraint pair is an edge of the triangle soup. `line_of_pair` (from
-/// read_constraints) lets the message name the file line. \throw RequestError naming the file,
-/// the line and the pair. O(F + pairs).
-void check_constraint_edges(const std::string& path, const std::vector<std::pair<uint32_t, uint32_t>>& pairs,
-                            const std::vector<uint32_t>& line_of_pair, const TriangleSoup& soup);
+/// Checks that every constraint edge read from `path` is an edge of the triangle soup.
+/// \throw RequestError naming the file, the line and the pair. O(F + edges).
+void check_constraint_edges(const std::string& path, const std::vector<ConstraintEdge>& edges, const TriangleSoup& soup);
 
 /// Output mesh formats, chosen by extension (glTF has its own writer, gltf.hpp).
 enum class OutputFormat { Ply, Obj, Off, Stl };
@@ -131,5 +138,14 @@ void write_indices(const std::string& path, const std::vector<uint32_t>& indices
 /// Writes `text` to `path` atomically (temporary file in the same directory + rename).
 /// \throw OutputError.
 void write_text_atomic(const std::string& path, std::string_view text);
+
+/// Writes {"cycles": [[face, ...], ...], "lengths": [...]} atomically (temporary + rename).
+/// \throw OutputError if the file cannot be written.
+void write_cycles_json(const std::string& path, const Cycles& cycles);
+
+/// Writes each cycle as a closed OBJ polyline (`v` lines, then one `l` line per cycle whose last
+/// index repeats its first) through face centroids and shared-edge midpoints, atomically.
+/// \throw OutputError if the file cannot be written.
+void write_cycles_obj(const std::string& path, const StripArrays& arrays, const Cycles& cycles);
 
 }  // namespace singlestrip

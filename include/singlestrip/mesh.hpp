@@ -17,12 +17,14 @@
 //      boundary half-edges)
 //   I6 face_parent_[f] < num_input_faces_
 //
-// Complexity: construction O(V + F) plus sorting each vertex's few edges; split O(1);
+// Complexity: construction O(V + F) (two counting sorts pair the half-edges); split O(1);
 // topology queries O(V + F).
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,15 +32,76 @@
 
 namespace singlestrip {
 
-inline constexpr uint32_t kNone = 0xffffffffu;
+/// "No such element": the one sentinel of every id type below and of the flat index arrays
+/// (it converts to 0xFFFFFFFF for those).
+struct NoneId {
+    [[nodiscard]] constexpr operator uint32_t() const noexcept { return 0xffffffffu; }
+};
+inline constexpr NoneId kNone{};
+
+/// An index that says what it indexes (as pmp-library's handles, geometry-central's elements):
+/// built explicitly from an index, read back with idx(), compared and hashed; default or kNone
+/// is "none". A trivially copyable uint32_t, so arrays of ids stay flat and cost nothing.
+template <class Tag>
+class Id {
+public:
+    constexpr Id() noexcept = default;
+    constexpr explicit Id(uint32_t idx) noexcept : idx_(idx) {}
+    constexpr Id(NoneId) noexcept {}  // NOLINT(google-explicit-constructor): kNone is every id's none
+    [[nodiscard]] constexpr uint32_t idx() const noexcept { return idx_; }
+    [[nodiscard]] constexpr bool valid() const noexcept { return idx_ != kNone; }
+    friend constexpr bool operator==(const Id&, const Id&) noexcept = default;
+    friend constexpr auto operator<=>(const Id&, const Id&) noexcept = default;
+
+private:
+    uint32_t idx_ = kNone;
+};
+
+using FaceId = Id<struct FaceTag>;          ///< a triangle of a Mesh
+using HalfedgeId = Id<struct HalfedgeTag>;  ///< a corner of a Mesh, i.e. the half-edge leaving it
+using VertexId = Id<struct VertexTag>;      ///< a vertex (a point) of a Mesh
+using RegionId = Id<struct RegionTag>;      ///< a set of faces a strip builder works on
+
+/// The index of an optional id, for interfaces that keep plain indices (the verifier's).
+template <class Tag>
+constexpr std::optional<uint32_t> index_of(const std::optional<Id<Tag>>& id) noexcept {
+    return id ? std::optional<uint32_t>(id->idx()) : std::nullopt;
+}
+
+/// Ids 0 .. n-1 of one kind, for range-for loops.
+template <class I>
+class IdRange {
+public:
+    class iterator {
+    public:
+        constexpr explicit iterator(uint32_t i) noexcept : i_(i) {}
+        constexpr I operator*() const noexcept { return I(i_); }
+        constexpr iterator& operator++() noexcept {
+            ++i_;
+            return *this;
+        }
+        friend constexpr bool operator==(iterator, iterator) noexcept = default;
+
+    private:
+        uint32_t i_;
+    };
+    constexpr explicit IdRange(uint32_t n) noexcept : n_(n) {}
+    [[nodiscard]] constexpr iterator begin() const noexcept { return iterator(0); }
+    [[nodiscard]] constexpr iterator end() const noexcept { return iterator(n_); }
+
+private:
+    uint32_t n_;
+};
+
+class SoupEdges;  // src/soup_edges.hpp
 
 /// What split_edge() created. The split edge (a,b) with midpoint m separated face f=(a,b,c)
 /// and its twin face g=(b,a,d); four faces now cover them:
 ///   f_a = (a,m,c) [reuses f's index], f_b = (m,b,c) [new], g_b = (b,m,d) [reuses g's index],
 ///   g_a = (m,a,d) [new]. Each child keeps its parent's orientation and input parent.
 struct SplitResult {
-    uint32_t vertex;  ///< the new midpoint vertex m (== old num_vertices())
-    uint32_t f_a, f_b, g_a, g_b;
+    VertexId vertex;  ///< the new midpoint vertex m (== old num_vertices())
+    FaceId f_a, f_b, g_a, g_b;
 };
 
 class Mesh {
@@ -61,27 +124,33 @@ public:
     [[nodiscard]] uint32_t num_input_faces() const noexcept { return num_input_faces_; }
     [[nodiscard]] uint32_t num_input_vertices() const noexcept { return num_input_vertices_; }
 
-    // --- navigation (all O(1)) ---
-    [[nodiscard]] static uint32_t face(uint32_t h) noexcept { return h / 3; }
-    [[nodiscard]] static uint32_t next(uint32_t h) noexcept { return h % 3 == 2 ? h - 2 : h + 1; }
-    [[nodiscard]] static uint32_t prev(uint32_t h) noexcept { return h % 3 == 0 ? h + 2 : h - 1; }
-    [[nodiscard]] static uint32_t halfedge(uint32_t f, uint32_t k) noexcept { return 3 * f + k; }
-    [[nodiscard]] uint32_t from(uint32_t h) const noexcept { return corner_vertex_[h]; }
-    [[nodiscard]] uint32_t to(uint32_t h) const noexcept { return corner_vertex_[next(h)]; }
-    /// Vertex opposite half-edge h in its face.
-    [[nodiscard]] uint32_t opposite(uint32_t h) const noexcept { return corner_vertex_[prev(h)]; }
-    [[nodiscard]] uint32_t twin(uint32_t h) const noexcept { return twin_[h]; }
-    [[nodiscard]] bool is_boundary(uint32_t h) const noexcept { return twin_[h] == kNone; }
-    /// Face across half-edge h, or kNone.
-    [[nodiscard]] uint32_t neighbor(uint32_t h) const noexcept {
-        return twin_[h] == kNone ? kNone : twin_[h] / 3;
-    }
-    [[nodiscard]] uint32_t vertex_halfedge(uint32_t v) const noexcept { return vertex_halfedge_[v]; }
-    [[nodiscard]] const Point3& position(uint32_t v) const noexcept { return points_[v]; }
-    [[nodiscard]] uint32_t parent(uint32_t f) const noexcept { return face_parent_[f]; }
-    /// The half-edge of face f shared with face g, or kNone if they are not adjacent.
-    [[nodiscard]] uint32_t shared_halfedge(uint32_t f, uint32_t g) const noexcept;
+    [[nodiscard]] IdRange<FaceId> faces() const noexcept { return IdRange<FaceId>(num_faces()); }
+    [[nodiscard]] IdRange<HalfedgeId> halfedges() const noexcept { return IdRange<HalfedgeId>(num_halfedges()); }
+    [[nodiscard]] IdRange<VertexId> vertices() const noexcept { return IdRange<VertexId>(num_vertices()); }
 
+    // --- navigation (all O(1)) ---
+    [[nodiscard]] static FaceId face(HalfedgeId h) noexcept { return FaceId(h.idx() / 3); }
+    [[nodiscard]] static HalfedgeId next(HalfedgeId h) noexcept { return HalfedgeId(h.idx() % 3 == 2 ? h.idx() - 2 : h.idx() + 1); }
+    [[nodiscard]] static HalfedgeId prev(HalfedgeId h) noexcept { return HalfedgeId(h.idx() % 3 == 0 ? h.idx() + 2 : h.idx() - 1); }
+    /// Half-edge k (0, 1, 2) of face f, counter-clockwise.
+    [[nodiscard]] static HalfedgeId halfedge(FaceId f, uint32_t k) noexcept { return HalfedgeId(3 * f.idx() + k); }
+    [[nodiscard]] VertexId from(HalfedgeId h) const noexcept { return VertexId(corner_vertex_[h.idx()]); }
+    [[nodiscard]] VertexId to(HalfedgeId h) const noexcept { return from(next(h)); }
+    /// Vertex opposite half-edge h in its face.
+    [[nodiscard]] VertexId opposite(HalfedgeId h) const noexcept { return from(prev(h)); }
+    [[nodiscard]] HalfedgeId twin(HalfedgeId h) const noexcept { return HalfedgeId(twin_[h.idx()]); }
+    [[nodiscard]] bool is_boundary(HalfedgeId h) const noexcept { return twin_[h.idx()] == kNone; }
+    /// Face across half-edge h, or kNone.
+    [[nodiscard]] FaceId neighbor(HalfedgeId h) const noexcept { return is_boundary(h) ? FaceId() : face(twin(h)); }
+    [[nodiscard]] HalfedgeId vertex_halfedge(VertexId v) const noexcept { return HalfedgeId(vertex_halfedge_[v.idx()]); }
+    [[nodiscard]] const Point3& position(VertexId v) const noexcept { return points_[v.idx()]; }
+    /// The input face (of the mesh from_soup() built) that face f lies in.
+    [[nodiscard]] FaceId parent(FaceId f) const noexcept { return FaceId(face_parent_[f.idx()]); }
+    /// The half-edge of face f shared with face g, or kNone if they are not adjacent.
+    [[nodiscard]] HalfedgeId shared_halfedge(FaceId f, FaceId g) const noexcept;
+
+    /// Flat arrays for output and for algorithms that keep their own per-element arrays: plain
+    /// indices, corner 3f+k of face f.
     [[nodiscard]] const std::vector<uint32_t>& corner_vertices() const noexcept { return corner_vertex_; }
     [[nodiscard]] const std::vector<Point3>& points() const noexcept { return points_; }
     [[nodiscard]] const std::vector<uint32_t>& face_parents() const noexcept { return face_parent_; }
@@ -89,9 +158,9 @@ public:
     // --- mutation ---
     /// Splits the interior edge of half-edge h at its midpoint: the two faces on it become four
     /// (see SplitResult). All invariants hold afterwards. O(1) amortised.
-    /// \pre h < num_halfedges() and !is_boundary(h)
+    /// \pre h.idx() < num_halfedges() and !is_boundary(h)
     /// \throw InternalError if the precondition is violated.
-    SplitResult split_edge(uint32_t h);
+    SplitResult split_edge(HalfedgeId h);
 
     // --- topology (O(V + F)) ---
     [[nodiscard]] uint32_t num_referenced_vertices() const;
@@ -112,13 +181,23 @@ public:
     void validate() const;
 
 private:
-    std::vector<Point3> points_;            ///< vertex positions; input vertices first, then midpoints
-    std::vector<uint32_t> corner_vertex_;   ///< I1, I2: vertex of each corner, 3 per face, CCW
-    std::vector<uint32_t> twin_;            ///< I3: opposite half-edge or kNone
-    std::vector<uint32_t> vertex_halfedge_; ///< I4: one outgoing half-edge per vertex, or kNone
-    std::vector<uint32_t> face_parent_;     ///< I6: input triangle each face lies in
+    // Steps of from_soup().
+    void pair_halfedges(const SoupEdges& edges);
+    void assign_vertex_halfedges();
+    void check_vertex_fans() const;
+
+    std::vector<Point3> points_;             ///< vertex positions; input vertices first, then midpoints
+    std::vector<uint32_t> corner_vertex_;    ///< I1, I2: vertex of each corner, 3 per face, CCW
+    std::vector<uint32_t> twin_;             ///< I3: opposite half-edge or kNone
+    std::vector<uint32_t> vertex_halfedge_;  ///< I4: one outgoing half-edge per vertex, or kNone
+    std::vector<uint32_t> face_parent_;      ///< I6: input triangle each face lies in
     uint32_t num_input_faces_ = 0;
     uint32_t num_input_vertices_ = 0;
 };
 
 }  // namespace singlestrip
+
+template <class Tag>
+struct std::hash<singlestrip::Id<Tag>> {
+    std::size_t operator()(singlestrip::Id<Tag> id) const noexcept { return std::hash<uint32_t>{}(id.idx()); }
+};

@@ -44,15 +44,15 @@ struct StripOptions {
     /// The strip builder. Both give one verified strip on every valid input.
     StripEngine engine = StripEngine::Matching;
     /// Input face to start from. Default: a face on the mesh boundary when there is one (§4).
-    std::optional<uint32_t> seed_face;
+    std::optional<FaceId> seed_face;
     /// Greedy turns (paper Algorithm 2) and the neighbour-count ordering; off = the paper's
     /// plain same-direction turn rule.
     bool greedy = true;
     /// Edges the strip never crosses, as pairs of input vertex indices (§5.1).
     std::vector<std::pair<uint32_t, uint32_t>> constraint_edges;
     /// First strip face is incident to `source`, last to `target` (§5.2); input vertex indices.
-    std::optional<uint32_t> source;
-    std::optional<uint32_t> target;
+    std::optional<VertexId> source;
+    std::optional<VertexId> target;
     /// Call Mesh::validate() after every split (tests only: O(F) per split).
     bool validate_each_split = false;
 };

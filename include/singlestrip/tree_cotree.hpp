@@ -18,7 +18,6 @@
 #include <cstdint>
 #include <vector>
 
-#include "singlestrip/cycles.hpp"
 #include "singlestrip/mesh.hpp"
 
 namespace singlestrip {
@@ -69,9 +68,5 @@ private:
 
 /// Rank over Z2 of bit-vector rows (all of the same length). O(rows^2 * words).
 size_t z2_rank(std::vector<std::vector<uint64_t>> rows);
-
-/// The same for a strip: generators of result.mesh indexed in strip order, with their lengths
-/// (cycle_length() on strip_arrays(result)), directly comparable to compute_fundamental_cycles().
-Cycles tree_cotree_cycles(const StripResult& result);
 
 }  // namespace singlestrip

@@ -15,24 +15,21 @@ uint32_t from_index_base(uint32_t number, uint32_t base, const std::string& what
     return number - base;
 }
 
-std::vector<std::pair<uint32_t, uint32_t>> read_constraints_based(const std::string& path, uint32_t num_vertices, uint32_t index_base,
-                                                                  std::vector<uint32_t>* line_of_pair) {
-    if (index_base == 0) return read_constraints(path, num_vertices, line_of_pair);
+std::vector<ConstraintEdge> read_constraints_based(const std::string& path, uint32_t num_vertices, uint32_t index_base) {
+    if (index_base == 0) return read_constraints(path, num_vertices);
     if (index_base != 1) throw RequestError("index base " + std::to_string(index_base) + " is not 0 or 1");
     // Read without a bound, then check 1..num_vertices here so that messages use the user's numbers.
-    std::vector<uint32_t> lines;
-    auto pairs = read_constraints(path, std::numeric_limits<uint32_t>::max(), &lines);
-    for (size_t i = 0; i < pairs.size(); ++i)
-        for (uint32_t* v : {&pairs[i].first, &pairs[i].second}) {
-            const std::string where = path + ": line " + std::to_string(lines[i]) + ": ";
+    auto edges = read_constraints(path, std::numeric_limits<uint32_t>::max());
+    for (ConstraintEdge& e : edges)
+        for (uint32_t* v : {&e.a, &e.b}) {
+            const std::string where = path + ": line " + std::to_string(e.line) + ": ";
             if (*v == 0) throw InputError(where + "vertex 0 does not exist when numbering starts at 1 (--index-base 1)");
             if (*v > num_vertices)
                 throw InputError(where + "vertex " + std::to_string(*v) + " is out of range (the mesh has " + std::to_string(num_vertices) +
                                  " vertices, numbered from 1)");
             --*v;
         }
-    if (line_of_pair) line_of_pair->insert(line_of_pair->end(), lines.begin(), lines.end());
-    return pairs;
+    return edges;
 }
 
 namespace {

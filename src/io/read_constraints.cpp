@@ -5,18 +5,17 @@
 #include <fstream>
 #include <sstream>
 #include <string>
-#include <unordered_set>
 
+#include "../soup_edges.hpp"
 #include "singlestrip/errors.hpp"
 #include "singlestrip/io.hpp"
 
 namespace singlestrip {
 
-std::vector<std::pair<uint32_t, uint32_t>> read_constraints(const std::string& path, uint32_t num_vertices,
-                                                             std::vector<uint32_t>* line_of_pair) {
+std::vector<ConstraintEdge> read_constraints(const std::string& path, uint32_t num_vertices) {
     std::ifstream in(path);
     if (!in) throw InputError(path + ": cannot open constraint file (" + std::strerror(errno) + ")");
-    std::vector<std::pair<uint32_t, uint32_t>> pairs;
+    std::vector<ConstraintEdge> edges;
     std::string line;
     std::size_t lineno = 0;
     while (std::getline(in, line)) {
@@ -35,27 +34,28 @@ std::vector<std::pair<uint32_t, uint32_t>> read_constraints(const std::string& p
                 throw InputError(where + "vertex " + tok + " is out of range (the mesh has " + std::to_string(num_vertices) + " vertices)");
             poly.push_back(static_cast<uint32_t>(v));
         }
-        if (poly.size() == 1) throw InputError(path + ": line " + std::to_string(lineno) + ": a constraint polyline needs at least 2 vertices");
+        if (poly.size() == 1)
+            throw InputError(path + ": line " + std::to_string(lineno) + ": a constraint polyline needs at least 2 vertices");
         for (std::size_t i = 0; i + 1 < poly.size(); ++i) {
-            pairs.emplace_back(poly[i], poly[i + 1]);
-            if (line_of_pair) line_of_pair->push_back(static_cast<uint32_t>(lineno));
+            edges.push_back({poly[i], poly[i + 1], static_cast<uint32_t>(lineno)});
         }
     }
     if (in.bad()) throw InputError(path + ": read error");
+    return edges;
+}
+
+std::vector<std::pair<uint32_t, uint32_t>> vertex_pairs(const std::vector<ConstraintEdge>& edges) {
+    std::vector<std::pair<uint32_t, uint32_t>> pairs;
+    pairs.reserve(edges.size());
+    for (const ConstraintEdge& e : edges) pairs.emplace_back(e.a, e.b);
     return pairs;
 }
 
-void check_constraint_edges(const std::string& path, const std::vector<std::pair<uint32_t, uint32_t>>& pairs,
-                            const std::vector<uint32_t>& line_of_pair, const TriangleSoup& soup) {
-    std::unordered_set<uint64_t> edges;
-    edges.reserve(3 * soup.triangles.size());
-    auto key = [](uint64_t a, uint64_t b) { return a < b ? a << 32 | b : b << 32 | a; };
-    for (const Triangle& t : soup.triangles)
-        for (int k = 0; k < 3; ++k) edges.insert(key(t[k], t[(k + 1) % 3]));
-    for (size_t i = 0; i < pairs.size(); ++i)
-        if (!edges.count(key(pairs[i].first, pairs[i].second)))
-            throw RequestError(path + ": " + (i < line_of_pair.size() ? "line " + std::to_string(line_of_pair[i]) + ": " : std::string()) +
-                               "(" + std::to_string(pairs[i].first) + ", " + std::to_string(pairs[i].second) +
+void check_constraint_edges(const std::string& path, const std::vector<ConstraintEdge>& constraints, const TriangleSoup& soup) {
+    const SoupEdges edges(soup.triangles, soup.points.size());
+    for (const ConstraintEdge& c : constraints)
+        if (!edges.has_edge(c.a, c.b))
+            throw RequestError(path + ": line " + std::to_string(c.line) + ": (" + std::to_string(c.a) + ", " + std::to_string(c.b) +
                                ") is not an edge of the mesh");
 }
 

@@ -21,8 +21,8 @@ StripCheck strip_and_verify(const TriangleSoup& soup, const StripOptions& option
     in.out_parent = c.arrays.parent;
     in.indices = c.indices;
     in.constraints = options.constraint_edges;
-    in.source = options.source;
-    in.target = options.target;
+    in.source = index_of(options.source);
+    in.target = index_of(options.target);
     c.report = verify(in);
     return c;
 }
