@@ -53,6 +53,11 @@ private:
     /// it by one; at 0 the region is a disk and a failed cavity test proves a bridge.
     std::vector<long long> region_beta_;
     std::vector<uint32_t> vstamp_;  ///< per vertex: marks for chi_of()
+    /// Per vertex: striped faces around it, and whether a walk around it meets a boundary or
+    /// constraint edge (fixed once constraints are applied; a split's midpoint is interior).
+    /// Together they answer the cavity test in O(1): fan_connects().
+    std::vector<uint32_t> striped_at_;
+    std::vector<uint8_t> rim_;
     uint32_t vstamp_base_ = 0;
     struct Deferred {
         uint32_t region;
@@ -91,6 +96,8 @@ private:
     uint32_t new_region(uint32_t size);
     void insert_after(uint32_t cursor, uint32_t f);
     void take(uint32_t cursor, uint32_t f);
+    void count_striped(uint32_t f, int delta);
+    bool fan_connects_walk(uint32_t n, uint32_t ha, uint32_t hb, uint32_t r) const;
 
     /// Safe: removing the face keeps the region connected. Bridge: it does not. Unknown: the
     /// cheap tests failed and the region has cycles, so only a search can tell.
@@ -146,6 +153,12 @@ void Builder::grow_arrays() {
     time_.resize(nf, kNone);
     blocked_.resize(mesh_.num_halfedges(), 0);
     vstamp_.resize(mesh_.num_vertices(), 0);
+    striped_at_.resize(mesh_.num_vertices(), 0);
+    rim_.resize(mesh_.num_vertices(), 0);
+}
+
+void Builder::count_striped(uint32_t f, int delta) {
+    for (uint32_t k = 0; k < 3; ++k) striped_at_[mesh_.corner_vertices()[Mesh::halfedge(f, k)]] += static_cast<uint32_t>(delta);
 }
 
 // chi of a set of open faces of region r: F - (passable edges inside) + (vertices whose whole
@@ -206,20 +219,35 @@ void Builder::insert_after(uint32_t cursor, uint32_t f) {
 void Builder::take(uint32_t cursor, uint32_t f) {
     if (striped_[f]) throw InternalError("strip builder: face " + std::to_string(f) + " taken twice");
     striped_[f] = 1;
+    count_striped(f, +1);
     time_[f] = clock_++;
     --region_size_[region_[f]];
     insert_after(cursor, f);
 }
 
-// Local cavity test (paper Fig. 6): walk around the vertex V shared by N's edges towards a and
-// b, starting at a and moving away from N, through open faces of r. Reaching b proves a and b
-// stay connected without N.
+// Local cavity test (paper Fig. 6): a and b (N's open neighbours across ha and hb) stay connected
+// without N if the faces around the vertex V shared by ha and hb lead from a to b, away from N,
+// through open faces of r and passable edges. That path is every face and edge around V but N
+// and its two edges, so it exists exactly when V is not on the rim (no boundary or constraint
+// edge at V) and no face around V is striped: the unstriped faces around V are then connected
+// to N, hence in N's region (a region is a connected piece of the unstriped faces). O(1), any
+// valence. (A walk around V cost O(valence) per test: quadratic on a cone's apex; a walk capped at
+// 4096 steps answered "not connected" wrongly and a closed cone failed with "fundamental
+// triangle in a region without cycles".)
 bool Builder::fan_connects(uint32_t n, uint32_t ha, uint32_t hb, uint32_t r) const {
+    const uint32_t v = mesh_.from(ha) == mesh_.to(hb) ? mesh_.from(ha) : mesh_.to(ha);
+    // a shares both its edges at V with N: N closes the fan, the path would go through N.
+    const bool connects = mesh_.neighbor(ha) != mesh_.neighbor(hb) && !rim_[v] && striped_at_[v] == 0;
+    if (opt_.validate_each_split && connects != fan_connects_walk(n, ha, hb, r))
+        throw InternalError("strip builder: cavity test disagrees with the walk around vertex " + std::to_string(v));
+    return connects;
+}
+
+// The same test by walking around V (O(valence)); a cross-check in tests (validate_each_split).
+bool Builder::fan_connects_walk(uint32_t n, uint32_t ha, uint32_t hb, uint32_t r) const {
     const uint32_t v = mesh_.from(ha) == mesh_.to(hb) ? mesh_.from(ha) : mesh_.to(ha);
     const uint32_t b = mesh_.neighbor(hb);
     uint32_t g = mesh_.twin(ha);  // in face a, incident to v
-    // No cap on the degree: a cap answered "not connected" around a vertex of valence > 4096 and
-    // a closed cone then failed with "fundamental triangle in a region without cycles".
     for (uint32_t guard = 0; guard <= mesh_.num_halfedges(); ++guard) {
         const uint32_t other = mesh_.from(g) == v ? Mesh::prev(g) : Mesh::next(g);
         if (!passable(other)) return false;
@@ -335,10 +363,18 @@ SplitResult Builder::split_at(uint32_t h) {
     // Constraint flags of the two half-edges that split_edge moves into new faces.
     const uint32_t moved_f = Mesh::next(h), moved_g = Mesh::next(mesh_.twin(h));
     const uint8_t blocked_f = blocked_[moved_f], blocked_g = blocked_[moved_g];
+    // The children of a striped face are striped (the host's in absorb()).
+    const uint8_t striped_f = striped_[Mesh::face(h)], striped_g = striped_[Mesh::face(mesh_.twin(h))];
+    if (striped_f) count_striped(Mesh::face(h), -1);
+    if (striped_g) count_striped(Mesh::face(mesh_.twin(h)), -1);
     const SplitResult s = mesh_.split_edge(h);
     ++stats_.splits;
     check_split_budget();
     grow_arrays();
+    striped_[s.f_b] = striped_f;
+    striped_[s.g_a] = striped_g;
+    for (const uint32_t f : {s.f_a, s.f_b, s.g_a, s.g_b})
+        if (striped_[f]) count_striped(f, +1);
     blocked_[moved_f] = 0;
     blocked_[moved_g] = 0;
     blocked_[3 * s.f_b + 1] = blocked_f;
@@ -421,11 +457,13 @@ void Builder::grow(uint32_t cursor, uint32_t region, uint32_t dest) {
         const uint32_t considered = opt_.greedy ? nc : 1;
         uint32_t chosen = kNone;
         Classification cls[3];
-        for (uint32_t i = 0; i < considered; ++i) cls[i] = classify_local(cand[idx[i]], t, region);
         // In preference order: safe by the cheap tests, or by a search of bounded cost (O(1)
-        // per step, so a long search is never spent on a face we might not take).
+        // per step, so a long search is never spent on a face we might not take). The cheap
+        // tests of a candidate run only when the ones before it are not safe (a cavity test
+        // around a high-valence vertex is not O(1) either).
         constexpr size_t kFirstBudget = 256;
         for (uint32_t i = 0; i < considered && chosen == kNone; ++i) {
+            cls[i] = classify_local(cand[idx[i]], t, region);
             if (cls[i].kind == Kind::Unknown) resolve(cls[i], cand[idx[i]], region, kFirstBudget);
             if (cls[i].kind == Kind::Safe) chosen = i;
         }
@@ -523,7 +561,6 @@ void Builder::absorb(uint32_t record) {
     }
     const uint32_t p = prev_[host], n = next_[host];
     const SplitResult s = split_at(hh);
-    striped_[s.f_b] = 1;
     region_[s.f_b] = kNoRegion;
     fundamental_[s.f_b] = fundamental_[host];
     time_[s.f_b] = time_[host];
@@ -768,6 +805,8 @@ StripResult Builder::run() {
     }
     grow_arrays();
     apply_constraints();
+    for (uint32_t h = 0; h < mesh_.num_halfedges(); ++h)
+        if (!passable(h)) rim_[mesh_.from(h)] = rim_[mesh_.to(h)] = 1;
     stats_.input_triangles = nf;
     stats_.boundary_loops = mesh_.num_boundary_loops();
     stats_.genus = mesh_.genus();
