@@ -25,6 +25,8 @@ namespace singlestrip {
 namespace {
 
 constexpr uint32_t kNoRegion = kNone;
+/// try_detour(): faces scanned near the anchor at most, always allowed, and earned per face taken.
+constexpr size_t kScanLimit = 1024, kScanMinimum = 16, kScanCreditPerFace = 32;
 
 class Builder {
 public:
@@ -73,7 +75,11 @@ private:
 
     // scratch
     std::vector<uint32_t> side_[2];
+    std::vector<uint32_t> stack_[2];
     uint32_t searched_ = kNone;  ///< the face whose islands side_ holds
+    /// Faces try_detour() may still scan: it earns kScanCreditPerFace per face taken, so the
+    /// scans of failed detours (a split follows each) cost O(F) in all.
+    size_t scan_credit_ = 0;
     std::vector<uint32_t> scratch_;
 
     [[nodiscard]] bool passable(uint32_t h) const { return !mesh_.is_boundary(h) && !blocked_[h]; }
@@ -221,6 +227,7 @@ void Builder::take(uint32_t cursor, uint32_t f) {
     striped_[f] = 1;
     count_striped(f, +1);
     time_[f] = clock_++;
+    scan_credit_ += kScanCreditPerFace;
     --region_size_[region_[f]];
     insert_after(cursor, f);
 }
@@ -269,25 +276,31 @@ int Builder::bidirectional_search(uint32_t n, uint32_t a, uint32_t b, uint32_t r
         stamp_base_ = 2;
     }
     const uint32_t mark[2] = {stamp_base_, stamp_base_ + 1};
-    size_t head[2] = {0, 0};
-    side_[0].clear();
-    side_[1].clear();
+    size_t popped = 0;
+    for (int s = 0; s < 2; ++s) {
+        side_[s].clear();
+        stack_[s].clear();
+    }
     side_[0].push_back(a);
     side_[1].push_back(b);
+    stack_[0].push_back(a);
+    stack_[1].push_back(b);
     stamp_[a] = mark[0];
     stamp_[b] = mark[1];
     stamp_[n] = mark[0];  // never enter n (both sides treat it as foreign but not as a meeting)
     for (;;) {
-        if (head[0] + head[1] > budget) {
+        if (popped > budget) {
             stamp_[n] = 0;
             return kOverBudget;
         }
         for (int s = 0; s < 2; ++s) {
-            if (head[s] == side_[s].size()) {
+            if (stack_[s].empty()) {
                 stamp_[n] = 0;
                 return s;
             }
-            const uint32_t f = side_[s][head[s]++];
+            const uint32_t f = stack_[s].back();
+            stack_[s].pop_back();
+            ++popped;
             for (uint32_t k = 0; k < 3; ++k) {
                 const uint32_t g = open_neighbor(3 * f + k, r);
                 if (g == kNone || g == n) continue;
@@ -298,6 +311,7 @@ int Builder::bidirectional_search(uint32_t n, uint32_t a, uint32_t b, uint32_t r
                 }
                 stamp_[g] = mark[s];
                 side_[s].push_back(g);
+                stack_[s].push_back(g);
             }
         }
     }
@@ -603,13 +617,15 @@ void Builder::absorb(uint32_t record) {
 // strip r1 ... r2 goes between them and no split is needed. O(min(region size, kScanLimit)).
 bool Builder::try_detour(uint32_t region, uint32_t anchor) {
     // Only the part of the region near its anchor is examined (a large region deferred again and
-    // again inside nested splices would otherwise be scanned each time: quadratic).
-    constexpr size_t kScanLimit = 1024;
+    // again inside nested splices would otherwise be scanned each time: quadratic), and no more
+    // than the credit earned by the faces taken so far (many absorbs of large regions without a
+    // detour, as between parallel holes, would otherwise cost kScanLimit each).
+    const size_t limit = std::max(kScanMinimum, std::min(kScanLimit, scan_credit_));
     scratch_.clear();
     scratch_.push_back(anchor);
     stamp_base_ += 2;
     stamp_[anchor] = stamp_base_;
-    for (size_t i = 0; i < scratch_.size() && scratch_.size() < kScanLimit; ++i) {
+    for (size_t i = 0; i < scratch_.size() && scratch_.size() < limit; ++i) {
         const uint32_t f = scratch_[i];
         for (uint32_t k = 0; k < 3; ++k) {
             const uint32_t g = open_neighbor(3 * f + k, region);
@@ -619,6 +635,7 @@ bool Builder::try_detour(uint32_t region, uint32_t anchor) {
             }
         }
     }
+    scan_credit_ -= std::min(scan_credit_, scratch_.size());
     const bool single = region_size_[region] == 1;
     for (const uint32_t r1 : scratch_) {
         for (uint32_t k = 0; k < 3; ++k) {
