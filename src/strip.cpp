@@ -17,6 +17,7 @@
 #include <cstdint>
 #include <numeric>
 #include <string>
+#include <utility>
 
 #include "singlestrip/errors.hpp"
 
@@ -92,7 +93,7 @@ private:
     }
     [[nodiscard]] uint32_t count_open(uint32_t f, uint32_t r) const {
         uint32_t n = 0;
-        for (uint32_t k = 0; k < 3; ++k) n += open_neighbor(3 * f + k, r) != kNone;
+        for (uint32_t k = 0; k < 3; ++k) n += open_neighbor(Mesh::halfedge(f, k), r) != kNone;
         return n;
     }
 
@@ -123,8 +124,10 @@ private:
         return c;
     }
     bool fan_connects(uint32_t n, uint32_t ha, uint32_t hb, uint32_t r) const;
-    static constexpr int kMeet = -1, kOverBudget = 2;
-    int bidirectional_search(uint32_t n, uint32_t a, uint32_t b, uint32_t r, size_t budget = SIZE_MAX);
+    /// What a bidirectional search found: the sides met (a and b stay connected without n), the
+    /// island of a or of b ran out first (it is in side_[0] or side_[1]), or the budget ran out.
+    enum class SearchOutcome : uint8_t { Met, IslandOfA, IslandOfB, OverBudget };
+    SearchOutcome bidirectional_search(uint32_t n, uint32_t a, uint32_t b, uint32_t r, size_t budget = SIZE_MAX);
 
     void grow(uint32_t cursor, uint32_t region, uint32_t dest);
     uint32_t take_bridge(uint32_t cursor, uint32_t n, uint32_t region, uint32_t dest, const Classification& c);
@@ -141,9 +144,20 @@ private:
     void apply_constraints();
     [[nodiscard]] bool has_vertex(uint32_t f, uint32_t v) const {
         const auto& cv = mesh_.corner_vertices();
-        return cv[3 * f] == v || cv[3 * f + 1] == v || cv[3 * f + 2] == v;
+        return cv[Mesh::halfedge(f, 0)] == v || cv[Mesh::halfedge(f, 1)] == v || cv[Mesh::halfedge(f, 2)] == v;
     }
     uint32_t source_ = kNone, target_ = kNone;
+
+    // ---- the steps of run() ----
+    void check_request() const;
+    void prepare();
+    std::pair<uint32_t, uint32_t> choose_ends();
+    long long surface_beta();
+    void mark_piece(uint32_t f);
+    uint32_t relabel_piece(uint32_t f);
+    uint32_t split_at_seed(uint32_t seed, uint32_t dest, long long beta_all);
+    void absorb_all();
+    StripResult finish();
     void check_split_budget() const;
     SplitResult split_at(uint32_t h);
 };
@@ -174,7 +188,7 @@ long long Builder::chi_of(const std::vector<uint32_t>& faces, uint32_t r) {
     long long inner_halfedges = 0, interior_vertices = 0;
     for (const uint32_t f : faces) {
         for (uint32_t k = 0; k < 3; ++k) {
-            const uint32_t h = 3 * f + k;
+            const uint32_t h = Mesh::halfedge(f, k);
             inner_halfedges += open_neighbor(h, r) != kNone;
             const uint32_t v = mesh_.from(h);
             if (vstamp_[v] == vstamp_base_) continue;
@@ -267,9 +281,9 @@ bool Builder::fan_connects_walk(uint32_t n, uint32_t ha, uint32_t hb, uint32_t r
 }
 
 // Alternating search from a and from b through open faces of r, never entering n.
-// Returns -1 if they meet (connected), else the side (0 = a, 1 = b) that ran out first; that
-// side's faces are then in side_[s]. Cost O(size of the smaller island) when they are separated.
-int Builder::bidirectional_search(uint32_t n, uint32_t a, uint32_t b, uint32_t r, size_t budget) {
+// Met if they meet (connected), else the side that ran out first (IslandOfA or IslandOfB); that
+// side's faces are then in side_[0] or side_[1]. Cost O(size of the smaller island) when they are separated.
+Builder::SearchOutcome Builder::bidirectional_search(uint32_t n, uint32_t a, uint32_t b, uint32_t r, size_t budget) {
     stamp_base_ += 2;
     if (stamp_base_ >= 0xfffffff0u) {
         std::fill(stamp_.begin(), stamp_.end(), 0);
@@ -291,23 +305,23 @@ int Builder::bidirectional_search(uint32_t n, uint32_t a, uint32_t b, uint32_t r
     for (;;) {
         if (popped > budget) {
             stamp_[n] = 0;
-            return kOverBudget;
+            return SearchOutcome::OverBudget;
         }
         for (int s = 0; s < 2; ++s) {
             if (stack_[s].empty()) {
                 stamp_[n] = 0;
-                return s;
+                return s == 0 ? SearchOutcome::IslandOfA : SearchOutcome::IslandOfB;
             }
             const uint32_t f = stack_[s].back();
             stack_[s].pop_back();
             ++popped;
             for (uint32_t k = 0; k < 3; ++k) {
-                const uint32_t g = open_neighbor(3 * f + k, r);
+                const uint32_t g = open_neighbor(Mesh::halfedge(f, k), r);
                 if (g == kNone || g == n) continue;
                 if (stamp_[g] == mark[s]) continue;
                 if (stamp_[g] == mark[1 - s]) {
                     stamp_[n] = 0;
-                    return -1;
+                    return SearchOutcome::Met;
                 }
                 stamp_[g] = mark[s];
                 side_[s].push_back(g);
@@ -322,7 +336,7 @@ int Builder::bidirectional_search(uint32_t n, uint32_t a, uint32_t b, uint32_t r
 Builder::Classification Builder::classify_local(uint32_t n, uint32_t from, uint32_t r) const {
     Classification c;
     for (uint32_t k = 0; k < 3; ++k) {
-        const uint32_t h = 3 * n + k;
+        const uint32_t h = Mesh::halfedge(n, k);
         const uint32_t g = open_neighbor(h, r);
         if (g == kNone || g == from) continue;
         if (c.a == kNone) {
@@ -344,10 +358,10 @@ Builder::Classification Builder::classify_local(uint32_t n, uint32_t from, uint3
 // (faces visited) it may return false: still Unknown.
 bool Builder::resolve(Classification& c, uint32_t n, uint32_t r, size_t budget) {
     if (c.kind == Kind::Safe || (c.kind == Kind::Bridge && c.small_side != kNone && searched_ == n)) return true;
-    const int s = bidirectional_search(n, c.a, c.b, r, budget);
+    const SearchOutcome s = bidirectional_search(n, c.a, c.b, r, budget);
     searched_ = n;
-    if (s == kOverBudget) return false;
-    if (s == kMeet) {
+    if (s == SearchOutcome::OverBudget) return false;
+    if (s == SearchOutcome::Met) {
         // A split candidate that is not a bridge (§3.1). Impossible in a disk.
         if (region_beta_[r] <= 0)
             throw InternalError("strip builder: fundamental triangle in a region without cycles (topology tracking broken)");
@@ -356,7 +370,7 @@ bool Builder::resolve(Classification& c, uint32_t n, uint32_t r, size_t budget) 
         return true;
     }
     c.kind = Kind::Bridge;
-    c.small_side = static_cast<uint32_t>(s);
+    c.small_side = s == SearchOutcome::IslandOfA ? 0 : 1;
     return true;
 }
 
@@ -391,8 +405,8 @@ SplitResult Builder::split_at(uint32_t h) {
         if (striped_[f]) count_striped(f, +1);
     blocked_[moved_f] = 0;
     blocked_[moved_g] = 0;
-    blocked_[3 * s.f_b + 1] = blocked_f;
-    blocked_[3 * s.g_a + 1] = blocked_g;
+    blocked_[Mesh::halfedge(s.f_b, 1)] = blocked_f;
+    blocked_[Mesh::halfedge(s.g_a, 1)] = blocked_g;
     if (opt_.validate_each_split) mesh_.validate();
     return s;
 }
@@ -415,7 +429,7 @@ void Builder::grow(uint32_t cursor, uint32_t region, uint32_t dest) {
         uint32_t nc = 0;
         bool dest_adjacent = false;
         for (uint32_t k = 0; k < 3; ++k) {
-            const uint32_t h = 3 * t + k;
+            const uint32_t h = Mesh::halfedge(t, k);
             const uint32_t g = open_neighbor(h, region);
             if (g == kNone) continue;
             if (g == dest && region_size_[region] > 1) {
@@ -628,7 +642,7 @@ bool Builder::try_detour(uint32_t region, uint32_t anchor) {
     for (size_t i = 0; i < scratch_.size() && scratch_.size() < limit; ++i) {
         const uint32_t f = scratch_[i];
         for (uint32_t k = 0; k < 3; ++k) {
-            const uint32_t g = open_neighbor(3 * f + k, region);
+            const uint32_t g = open_neighbor(Mesh::halfedge(f, k), region);
             if (g != kNone && stamp_[g] != stamp_base_) {
                 stamp_[g] = stamp_base_;
                 scratch_.push_back(g);
@@ -639,14 +653,14 @@ bool Builder::try_detour(uint32_t region, uint32_t anchor) {
     const bool single = region_size_[region] == 1;
     for (const uint32_t r1 : scratch_) {
         for (uint32_t k = 0; k < 3; ++k) {
-            const uint32_t h = 3 * r1 + k;
+            const uint32_t h = Mesh::halfedge(r1, k);
             if (!passable(h)) continue;
             const uint32_t x = mesh_.neighbor(h);
             if (!striped_[x]) continue;
             const uint32_t y = next_[x];
             if (y == kNone) continue;
             for (uint32_t j = 0; j < 3; ++j) {
-                const uint32_t hy = 3 * y + j;
+                const uint32_t hy = Mesh::halfedge(y, j);
                 if (!passable(hy)) continue;
                 const uint32_t r2 = mesh_.neighbor(hy);
                 if (!in_region(r2, region) || (r2 == r1) != single) continue;
@@ -662,7 +676,7 @@ bool Builder::try_detour(uint32_t region, uint32_t anchor) {
 
 bool Builder::absorb_at_tail() {
     for (uint32_t k = 0; k < 3; ++k) {
-        const uint32_t h = 3 * tail_ + k;
+        const uint32_t h = Mesh::halfedge(tail_, k);
         if (!passable(h)) continue;
         const uint32_t g = mesh_.neighbor(h);
         if (striped_[g]) continue;
@@ -684,7 +698,7 @@ uint32_t Builder::choose_seed() const {
     int best_score = -1;
     for (uint32_t f = 0; f < nf; ++f) {
         int closed = 0;
-        for (uint32_t k = 0; k < 3; ++k) closed += !passable(3 * f + k);
+        for (uint32_t k = 0; k < 3; ++k) closed += !passable(Mesh::halfedge(f, k));
         const int score = closed >= 3 ? 0 : closed;
         if (score > best_score) {
             best_score = score;
@@ -761,7 +775,7 @@ void Builder::apply_constraints() {
             stack.pop_back();
             ++sizes[id];
             for (uint32_t k = 0; k < 3; ++k) {
-                const uint32_t h = 3 * f + k;
+                const uint32_t h = Mesh::halfedge(f, k);
                 if (!passable(h)) continue;
                 const uint32_t g = mesh_.neighbor(h);
                 if (piece[g] == kNone) {
@@ -789,7 +803,7 @@ uint32_t Builder::face_at_vertex(uint32_t v, uint32_t avoid) const {
     for_each_outgoing(v, [&](uint32_t h) {
         const uint32_t f = Mesh::face(h);
         int score = 0;
-        for (uint32_t k = 0; k < 3; ++k) score += !passable(3 * f + k);
+        for (uint32_t k = 0; k < 3; ++k) score += !passable(Mesh::halfedge(f, k));
         if (f == avoid) score = -1;
         if (score > best_score || best == kNone) {
             best_score = score;
@@ -800,7 +814,8 @@ uint32_t Builder::face_at_vertex(uint32_t v, uint32_t avoid) const {
     return best;
 }
 
-StripResult Builder::run() {
+// Rejects requests that cannot be met before anything is built.
+void Builder::check_request() const {
     const uint32_t nf = mesh_.num_faces();
     if (nf == 0) throw InputError("mesh has no faces");
     if (opt_.seed_face && *opt_.seed_face >= nf)
@@ -814,136 +829,150 @@ StripResult Builder::run() {
     };
     if (opt_.source) check_vertex("source", *opt_.source);
     if (opt_.target) check_vertex("target", *opt_.target);
-    if (opt_.seed_face && opt_.source) {
-        const uint32_t f = *opt_.seed_face;
-        const auto& cv = mesh_.corner_vertices();
-        if (cv[3 * f] != *opt_.source && cv[3 * f + 1] != *opt_.source && cv[3 * f + 2] != *opt_.source)
-            throw RequestError("seed face " + std::to_string(f) + " is not incident to source vertex " + std::to_string(*opt_.source));
-    }
+    if (opt_.seed_face && opt_.source && !has_vertex(*opt_.seed_face, *opt_.source))
+        throw RequestError("seed face " + std::to_string(*opt_.seed_face) + " is not incident to source vertex " +
+                           std::to_string(*opt_.source));
+}
+
+// Per-face state, constraints, the rim flags of the cavity test, the input's statistics, and
+// region 0 holding every face.
+void Builder::prepare() {
     grow_arrays();
     apply_constraints();
     for (uint32_t h = 0; h < mesh_.num_halfedges(); ++h)
         if (!passable(h)) rim_[mesh_.from(h)] = rim_[mesh_.to(h)] = 1;
-    stats_.input_triangles = nf;
+    stats_.input_triangles = mesh_.num_faces();
     stats_.boundary_loops = mesh_.num_boundary_loops();
     stats_.genus = mesh_.genus();
     source_ = opt_.source ? *opt_.source : kNone;
     target_ = opt_.target ? *opt_.target : kNone;
-
-    const uint32_t r0 = new_region(nf);
+    const uint32_t r0 = new_region(mesh_.num_faces());
     std::fill(region_.begin(), region_.end(), r0);
+}
+
+// The first face (seed) and the face the strip must end with (dest, kNone without a target).
+std::pair<uint32_t, uint32_t> Builder::choose_ends() {
+    const uint32_t nf = mesh_.num_faces();
+    const uint32_t r0 = 0;
     uint32_t seed = opt_.seed_face ? *opt_.seed_face : opt_.source ? face_at_vertex(*opt_.source, kNone) : choose_seed();
-    uint32_t dest = kNone;
-    if (opt_.target) {
-        dest = face_at_vertex(*opt_.target, seed);
-        if (dest == seed && nf > 1) {
-            // The target's only face is the first face: split it across the edge opposite the
-            // target so that both children touch the target; start in one, end in the other.
-            uint32_t h = 3 * seed;
-            while (mesh_.from(h) == target_ || mesh_.to(h) == target_) ++h;
-            if (!passable(h))
-                throw RequestError("cannot end at target vertex " + std::to_string(target_) +
-                                   ": its only face is the first face of the strip and cannot be split");
-            const SplitResult sr = split_at(h);
-            const bool a_first = source_ == kNone || has_vertex(sr.f_a, source_);
-            seed = a_first ? sr.f_a : sr.f_b;
-            dest = a_first ? sr.f_b : sr.f_a;
-            for (uint32_t f : {sr.f_b, sr.g_a}) region_[f] = r0;
-            region_size_[r0] += 2;
-        }
-        if (nf == 1) dest = kNone;
+    if (!opt_.target) return {seed, kNone};
+    uint32_t dest = face_at_vertex(*opt_.target, seed);
+    if (dest == seed && nf > 1) {
+        // The target's only face is the first face: split it across the edge opposite the
+        // target so that both children touch the target; start in one, end in the other.
+        uint32_t h = Mesh::halfedge(seed, 0);
+        while (mesh_.from(h) == target_ || mesh_.to(h) == target_) ++h;
+        if (!passable(h))
+            throw RequestError("cannot end at target vertex " + std::to_string(target_) +
+                               ": its only face is the first face of the strip and cannot be split");
+        const SplitResult sr = split_at(h);
+        const bool a_first = source_ == kNone || has_vertex(sr.f_a, source_);
+        seed = a_first ? sr.f_a : sr.f_b;
+        dest = a_first ? sr.f_b : sr.f_a;
+        for (uint32_t f : {sr.f_b, sr.g_a}) region_[f] = r0;
+        region_size_[r0] += 2;
     }
-    // Betti number of the whole surface (through passable edges), to tell whether the seed itself
-    // is a fundamental triangle (a face joining two boundary loops, paper Fig. 4).
-    long long beta_all = 0;
-    {
-        std::vector<uint32_t> all(mesh_.num_faces());
-        std::iota(all.begin(), all.end(), 0u);
-        beta_all = 1 - chi_of(all, r0);
-    }
-    take(kNone, seed);
-    // The seed may cut U apart (up to three pieces): label each piece; grow the one holding the
-    // destination (or the first) and defer the others, anchored at the seed.
-    uint32_t grow_region = r0;
-    {
-        uint32_t nbr[3], he[3], cnt = 0;
+    if (nf == 1) dest = kNone;
+    return {seed, dest};
+}
+
+// Betti number of the whole surface (through passable edges), to tell whether the seed itself
+// is a fundamental triangle (a face joining two boundary loops, paper Fig. 4).
+long long Builder::surface_beta() {
+    std::vector<uint32_t> all(mesh_.num_faces());
+    std::iota(all.begin(), all.end(), 0u);
+    return 1 - chi_of(all, 0);
+}
+
+// Marks (stamp_base_) the faces of region 0 reachable from f without crossing striped faces.
+void Builder::mark_piece(uint32_t f) {
+    stamp_base_ += 2;
+    stamp_[f] = stamp_base_;
+    scratch_.assign(1, f);
+    while (!scratch_.empty()) {
+        const uint32_t x = scratch_.back();
+        scratch_.pop_back();
         for (uint32_t k = 0; k < 3; ++k) {
-            const uint32_t g = open_neighbor(3 * seed + k, r0);
-            if (g != kNone) {
-                nbr[cnt] = g;
-                he[cnt++] = 3 * seed + k;
+            const uint32_t g = open_neighbor(Mesh::halfedge(x, k), 0);
+            if (g != kNone && stamp_[g] != stamp_base_) {
+                stamp_[g] = stamp_base_;
+                scratch_.push_back(g);
             }
-        }
-        uint32_t piece_region[3] = {r0, kNone, kNone};
-        for (uint32_t i = 1; i < cnt; ++i) {
-            // Flood the pieces of the earlier neighbours first time only (lazy): a piece already
-            // relabelled is recognised by its region.
-            if (i == 1) {
-                std::vector<uint32_t> stack{nbr[0]};
-                stamp_base_ += 2;
-                stamp_[nbr[0]] = stamp_base_;
-                while (!stack.empty()) {
-                    const uint32_t f = stack.back();
-                    stack.pop_back();
-                    for (uint32_t k = 0; k < 3; ++k) {
-                        const uint32_t g = open_neighbor(3 * f + k, r0);
-                        if (g != kNone && stamp_[g] != stamp_base_) {
-                            stamp_[g] = stamp_base_;
-                            stack.push_back(g);
-                        }
-                    }
-                }
-            }
-            if (stamp_[nbr[i]] == stamp_base_) {
-                piece_region[i] = r0;
-                continue;
-            }
-            if (region_[nbr[i]] != r0) {
-                piece_region[i] = region_[nbr[i]];
-                continue;
-            }
-            const uint32_t r = new_region(0);
-            piece_region[i] = r;
-            std::vector<uint32_t> st{nbr[i]};
-            region_[nbr[i]] = r;
-            while (!st.empty()) {
-                const uint32_t f = st.back();
-                st.pop_back();
-                ++region_size_[r];
-                --region_size_[r0];
-                for (uint32_t k = 0; k < 3; ++k) {
-                    const uint32_t g = open_neighbor(3 * f + k, r0);
-                    if (g != kNone) {
-                        region_[g] = r;
-                        st.push_back(g);
-                    }
-                }
-            }
-        }
-        // Betti numbers of the pieces (one O(F) pass at the start).
-        std::vector<std::vector<uint32_t>> members(region_size_.size());
-        for (uint32_t f = 0; f < mesh_.num_faces(); ++f)  // faces of a target pre-split too
-            if (!striped_[f]) members[region_[f]].push_back(f);
-        for (uint32_t r = 0; r < members.size(); ++r)
-            if (!members[r].empty()) region_beta_[r] = 1 - chi_of(members[r], r);
-        long long beta_pieces = 0;
-        for (uint32_t r = 0; r < members.size(); ++r) beta_pieces += members[r].empty() ? 0 : region_beta_[r];
-        if (beta_all > beta_pieces) {
-            fundamental_[seed] = 1;
-            stats_.fundamental_triangles += static_cast<uint32_t>(beta_all - beta_pieces);
-        }
-        if (dest != kNone) grow_region = region_[dest];
-        std::vector<uint32_t> done_regions{grow_region};
-        for (uint32_t i = 0; i < cnt; ++i) {
-            const uint32_t r = piece_region[i];
-            if (std::find(done_regions.begin(), done_regions.end(), r) != done_regions.end()) continue;
-            done_regions.push_back(r);
-            defer(r, mesh_.twin(he[i]));
         }
     }
-    grow(seed, grow_region, dest);
-    // Splice deferred regions: first any that touch the tail (free), then the rest, newest first
-    // (absorbing one may defer more).
+}
+
+// Moves the piece of region 0 holding f (not connected to the first piece) to a new region.
+uint32_t Builder::relabel_piece(uint32_t f) {
+    const uint32_t r = new_region(0);
+    region_[f] = r;
+    scratch_.assign(1, f);
+    while (!scratch_.empty()) {
+        const uint32_t x = scratch_.back();
+        scratch_.pop_back();
+        ++region_size_[r];
+        --region_size_[0];
+        for (uint32_t k = 0; k < 3; ++k) {
+            const uint32_t g = open_neighbor(Mesh::halfedge(x, k), 0);
+            if (g != kNone) {
+                region_[g] = r;
+                scratch_.push_back(g);
+            }
+        }
+    }
+    return r;
+}
+
+// The seed (already taken) may cut U apart, into up to three pieces: labels each piece, sets
+// their Betti numbers (one O(F) pass), notes the seed as fundamental if it lowered the total,
+// defers every piece but the one to grow (the destination's, or the first), anchored at the
+// seed. Returns the region to grow.
+uint32_t Builder::split_at_seed(uint32_t seed, uint32_t dest, long long beta_all) {
+    uint32_t nbr[3], he[3], cnt = 0;
+    for (uint32_t k = 0; k < 3; ++k) {
+        const uint32_t g = open_neighbor(Mesh::halfedge(seed, k), 0);
+        if (g != kNone) {
+            nbr[cnt] = g;
+            he[cnt++] = Mesh::halfedge(seed, k);
+        }
+    }
+    uint32_t piece_region[3] = {0, kNone, kNone};
+    for (uint32_t i = 1; i < cnt; ++i) {
+        if (i == 1) mark_piece(nbr[0]);  // the first neighbour's piece keeps region 0
+        if (stamp_[nbr[i]] == stamp_base_)
+            piece_region[i] = 0;
+        else if (region_[nbr[i]] != 0)  // relabelled with an earlier neighbour
+            piece_region[i] = region_[nbr[i]];
+        else
+            piece_region[i] = relabel_piece(nbr[i]);
+    }
+    std::vector<std::vector<uint32_t>> members(region_size_.size());
+    for (uint32_t f = 0; f < mesh_.num_faces(); ++f)  // faces of a target pre-split too
+        if (!striped_[f]) members[region_[f]].push_back(f);
+    long long beta_pieces = 0;
+    for (uint32_t r = 0; r < members.size(); ++r) {
+        if (members[r].empty()) continue;
+        region_beta_[r] = 1 - chi_of(members[r], r);
+        beta_pieces += region_beta_[r];
+    }
+    if (beta_all > beta_pieces) {
+        fundamental_[seed] = 1;
+        stats_.fundamental_triangles += static_cast<uint32_t>(beta_all - beta_pieces);
+    }
+    const uint32_t grow_region = dest != kNone ? region_[dest] : 0;
+    std::vector<uint32_t> done_regions{grow_region};
+    for (uint32_t i = 0; i < cnt; ++i) {
+        const uint32_t r = piece_region[i];
+        if (std::find(done_regions.begin(), done_regions.end(), r) != done_regions.end()) continue;
+        done_regions.push_back(r);
+        defer(r, mesh_.twin(he[i]));
+    }
+    return grow_region;
+}
+
+// Splices the deferred regions: first any that touch the tail (free), then the rest, newest
+// first (absorbing one may defer more).
+void Builder::absorb_all() {
     for (;;) {
         if (target_ == kNone && absorb_at_tail()) continue;
         uint32_t rec = kNone;
@@ -957,7 +986,10 @@ StripResult Builder::run() {
         if (rec == kNone) break;
         absorb(rec);
     }
+}
 
+// The strip's faces in order, the positions of fundamental triangles, and the swap count.
+StripResult Builder::finish() {
     StripResult result;
     result.order.reserve(mesh_.num_faces());
     for (uint32_t f = head_; f != kNone; f = next_[f]) {
@@ -983,6 +1015,18 @@ StripResult Builder::run() {
     result.take_time = std::move(time_);
     result.mesh = std::move(mesh_);
     return result;
+}
+
+StripResult Builder::run() {
+    check_request();
+    prepare();
+    const auto [seed, dest] = choose_ends();
+    const long long beta_all = surface_beta();
+    take(kNone, seed);
+    const uint32_t region = split_at_seed(seed, dest, beta_all);
+    grow(seed, region, dest);
+    absorb_all();
+    return finish();
 }
 
 }  // namespace
@@ -1016,7 +1060,7 @@ StripArrays strip_arrays(const StripResult& result) {
     out.parent.reserve(result.order.size());
     const auto& cv = result.mesh.corner_vertices();
     for (uint32_t f : result.order) {
-        out.faces.push_back({cv[3 * f], cv[3 * f + 1], cv[3 * f + 2]});
+        out.faces.push_back({cv[Mesh::halfedge(f, 0)], cv[Mesh::halfedge(f, 1)], cv[Mesh::halfedge(f, 2)]});
         out.parent.push_back(result.mesh.parent(f));
     }
     return out;
