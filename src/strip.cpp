@@ -152,10 +152,10 @@ private:
     void check_request() const;
     void prepare();
     std::pair<uint32_t, uint32_t> choose_ends();
-    long long surface_beta();
+    [[nodiscard]] long long surface_chi() const;
     void mark_piece(uint32_t f);
     uint32_t relabel_piece(uint32_t f);
-    uint32_t split_at_seed(uint32_t seed, uint32_t dest, long long beta_all);
+    uint32_t split_at_seed(uint32_t seed, uint32_t dest, long long chi_all);
     void absorb_all();
     StripResult finish();
     void check_split_budget() const;
@@ -876,12 +876,13 @@ std::pair<uint32_t, uint32_t> Builder::choose_ends() {
     return {seed, dest};
 }
 
-// Betti number of the whole surface (through passable edges), to tell whether the seed itself
-// is a fundamental triangle (a face joining two boundary loops, paper Fig. 4).
-long long Builder::surface_beta() {
-    std::vector<uint32_t> all(mesh_.num_faces());
-    std::iota(all.begin(), all.end(), 0u);
-    return 1 - chi_of(all, 0);
+// chi of the whole surface (through passable edges) before anything is taken: chi_of() of every
+// face, where an interior vertex is one off the rim (a flat pass, no walk around the vertices).
+long long Builder::surface_chi() const {
+    long long passable_halfedges = 0, interior_vertices = 0;
+    for (uint32_t h = 0; h < mesh_.num_halfedges(); ++h) passable_halfedges += passable(h);
+    for (uint32_t v = 0; v < mesh_.num_vertices(); ++v) interior_vertices += mesh_.vertex_halfedge(v) != kNone && !rim_[v];
+    return static_cast<long long>(mesh_.num_faces()) - passable_halfedges / 2 + interior_vertices;
 }
 
 // Marks (stamp_base_) the faces of region 0 reachable from f without crossing striped faces.
@@ -924,10 +925,11 @@ uint32_t Builder::relabel_piece(uint32_t f) {
 }
 
 // The seed (already taken) may cut U apart, into up to three pieces: labels each piece, sets
-// their Betti numbers (one O(F) pass), notes the seed as fundamental if it lowered the total,
-// defers every piece but the one to grow (the destination's, or the first), anchored at the
-// seed. Returns the region to grow.
-uint32_t Builder::split_at_seed(uint32_t seed, uint32_t dest, long long beta_all) {
+// their Betti numbers, notes the seed as fundamental if it lowered the total (a face joining
+// two boundary loops, paper Fig. 4), defers every piece but the one to grow (the destination's,
+// or the first), anchored at the seed. Returns the region to grow. chi_all: surface_chi().
+uint32_t Builder::split_at_seed(uint32_t seed, uint32_t dest, long long chi_all) {
+    const long long beta_all = 1 - chi_all;
     uint32_t nbr[3], he[3], cnt = 0;
     for (uint32_t k = 0; k < 3; ++k) {
         const uint32_t g = open_neighbor(Mesh::halfedge(seed, k), 0);
@@ -935,6 +937,22 @@ uint32_t Builder::split_at_seed(uint32_t seed, uint32_t dest, long long beta_all
             nbr[cnt] = g;
             he[cnt++] = Mesh::halfedge(seed, k);
         }
+    }
+    if (cnt <= 1) {
+        // One piece: chi_of() of every face but the seed, from chi_all without another pass. The
+        // seed takes one face and its cnt passable edges away, and its vertices off the rim are
+        // no longer interior (their fans hold a striped face). Beta cannot drop: not fundamental.
+        if (cnt == 0) return 0;
+        long long interior = 0;
+        for (uint32_t k = 0; k < 3; ++k) interior += !rim_[mesh_.from(Mesh::halfedge(seed, k))];
+        region_beta_[0] = beta_all + 1 - cnt + interior;
+        if (opt_.validate_each_split) {  // tests: the same by chi_of() and a walk around every vertex
+            std::vector<uint32_t> rest;
+            for (uint32_t f = 0; f < mesh_.num_faces(); ++f)
+                if (!striped_[f]) rest.push_back(f);
+            if (region_beta_[0] != 1 - chi_of(rest, 0)) throw InternalError("strip builder: Betti number after the seed is wrong");
+        }
+        return 0;
     }
     uint32_t piece_region[3] = {0, kNone, kNone};
     for (uint32_t i = 1; i < cnt; ++i) {
@@ -1021,9 +1039,14 @@ StripResult Builder::run() {
     check_request();
     prepare();
     const auto [seed, dest] = choose_ends();
-    const long long beta_all = surface_beta();
+    const long long chi_all = surface_chi();
+    if (opt_.validate_each_split) {  // tests: the same by chi_of()
+        std::vector<uint32_t> all(mesh_.num_faces());
+        std::iota(all.begin(), all.end(), 0u);
+        if (chi_all != chi_of(all, 0)) throw InternalError("strip builder: chi of the surface is wrong");
+    }
     take(kNone, seed);
-    const uint32_t region = split_at_seed(seed, dest, beta_all);
+    const uint32_t region = split_at_seed(seed, dest, chi_all);
     grow(seed, region, dest);
     absorb_all();
     return finish();
