@@ -27,7 +27,7 @@ namespace {
 
 constexpr uint32_t kNoRegion = kNone;
 /// try_detour(): faces scanned near the anchor at most, always allowed, and earned per face taken.
-constexpr size_t kScanLimit = 1024, kScanMinimum = 16, kScanCreditPerFace = 32;
+constexpr size_t kScanLimit = 1024, kScanMinimum = 16, kScanCreditPerFace = 8;
 
 class Builder {
 public:
