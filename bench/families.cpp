@@ -4,6 +4,7 @@
 #include <cmath>
 #include <utility>
 
+#include "many_centres.hpp"
 #include "scaling.hpp"
 #include "singlestrip/generators.hpp"
 
@@ -40,6 +41,14 @@ std::vector<Family> awkward_families() {
                                    WalledMesh w = make_awkward(fam, static_cast<uint32_t>(n));
                                    return Generated{std::move(w.soup), polyline_edges(w.walls)};
                                }});
+        out.push_back(std::move(f));
+    }
+    // Several high-valence centres (issue 17): 8 fans on a disk, and the disk glued to its mirror
+    // image (16 centres, closed).
+    for (const bool closed : {false, true}) {
+        Family f{closed ? "many_centres_closed" : "many_centres", {}, false, false};
+        for (const uint64_t n : {uint64_t{10000}, uint64_t{100000}, uint64_t{1000000}})
+            f.sizes.push_back({n, [n, closed] { return Generated{testing::make_many_centres(static_cast<uint32_t>(n), 8, closed), {}}; }});
         out.push_back(std::move(f));
     }
     return out;

@@ -17,12 +17,31 @@
 #include <cstdint>
 #include <numeric>
 #include <string>
+#include <utility>
 
 #include "singlestrip/errors.hpp"
 
 namespace singlestrip {
 
 namespace {
+
+// The builder keeps flat per-face and per-half-edge arrays, so it navigates by plain index.
+[[nodiscard]] inline uint32_t he(uint32_t f, uint32_t k) {
+    return Mesh::halfedge(FaceId(f), k).idx();
+}
+[[nodiscard]] inline uint32_t face_of(uint32_t h) {
+    return Mesh::face(HalfedgeId(h)).idx();
+}
+[[nodiscard]] inline uint32_t next_of(uint32_t h) {
+    return Mesh::next(HalfedgeId(h)).idx();
+}
+[[nodiscard]] inline uint32_t prev_of(uint32_t h) {
+    return Mesh::prev(HalfedgeId(h)).idx();
+}
+
+constexpr uint32_t kNoRegion = kNone;
+/// try_detour(): faces scanned near the anchor at most, always allowed, and earned per face taken.
+constexpr size_t kScanLimit = 1024, kScanMinimum = 16, kScanCreditPerFace = 8;
 
 class Builder {
 public:
@@ -34,6 +53,14 @@ private:
     // ---- per-face / per-half-edge state (resized on every split) ----
     Mesh mesh_;
     const StripOptions& opt_;
+    // Plain-index navigation (see he()).
+    [[nodiscard]] uint32_t twin_of(uint32_t h) const { return mesh_.twin(HalfedgeId(h)).idx(); }
+    [[nodiscard]] uint32_t across(uint32_t h) const { return mesh_.neighbor(HalfedgeId(h)).idx(); }
+    [[nodiscard]] bool boundary_of(uint32_t h) const { return mesh_.is_boundary(HalfedgeId(h)); }
+    [[nodiscard]] uint32_t from_of(uint32_t h) const { return mesh_.from(HalfedgeId(h)).idx(); }
+    [[nodiscard]] uint32_t to_of(uint32_t h) const { return mesh_.to(HalfedgeId(h)).idx(); }
+    [[nodiscard]] uint32_t shared_of(uint32_t f, uint32_t g) const { return mesh_.shared_halfedge(FaceId(f), FaceId(g)).idx(); }
+    [[nodiscard]] uint32_t vertex_he_of(uint32_t v) const { return mesh_.vertex_halfedge(VertexId(v)).idx(); }
     std::vector<uint8_t> blocked_;       ///< per half-edge: constraint edge (never crossed)
     std::vector<uint8_t> striped_;       ///< per face: already in the strip
     std::vector<uint32_t> region_;       ///< per face: region label of an unstriped face
@@ -51,6 +78,11 @@ private:
     /// it by one; at 0 the region is a disk and a failed cavity test proves a bridge.
     std::vector<long long> region_beta_;
     std::vector<uint32_t> vstamp_;  ///< per vertex: marks for chi_of()
+    /// Per vertex: striped faces around it, and whether a walk around it meets a boundary or
+    /// constraint edge (fixed once constraints are applied; a split's midpoint is interior).
+    /// Together they answer the cavity test in O(1): fan_connects().
+    std::vector<uint32_t> striped_at_;
+    std::vector<uint8_t> rim_;
     uint32_t vstamp_base_ = 0;
     struct Deferred {
         uint32_t region;
@@ -66,20 +98,24 @@ private:
 
     // scratch
     std::vector<uint32_t> side_[2];
+    std::vector<uint32_t> stack_[2];
     uint32_t searched_ = kNone;  ///< the face whose islands side_ holds
+    /// Faces try_detour() may still scan: it earns kScanCreditPerFace per face taken, so the
+    /// scans of failed detours (a split follows each) cost O(F) in all.
+    size_t scan_credit_ = 0;
     std::vector<uint32_t> scratch_;
 
-    [[nodiscard]] bool passable(uint32_t h) const { return !mesh_.is_boundary(HalfedgeId(h)) && !blocked_[h]; }
+    [[nodiscard]] bool passable(uint32_t h) const { return !boundary_of(h) && !blocked_[h]; }
     [[nodiscard]] bool in_region(uint32_t f, uint32_t r) const { return f != kNone && !striped_[f] && region_[f] == r; }
     /// Face across h if it is an unstriped face of region r, else kNone.
     [[nodiscard]] uint32_t open_neighbor(uint32_t h, uint32_t r) const {
         if (!passable(h)) return kNone;
-        const uint32_t g = mesh_.neighbor(HalfedgeId(h)).idx();
+        const uint32_t g = across(h);
         return in_region(g, r) ? g : kNone;
     }
     [[nodiscard]] uint32_t count_open(uint32_t f, uint32_t r) const {
         uint32_t n = 0;
-        for (uint32_t k = 0; k < 3; ++k) n += open_neighbor(3 * f + k, r) != kNone;
+        for (uint32_t k = 0; k < 3; ++k) n += open_neighbor(he(f, k), r) != kNone;
         return n;
     }
 
@@ -89,6 +125,8 @@ private:
     uint32_t new_region(uint32_t size);
     void insert_after(uint32_t cursor, uint32_t f);
     void take(uint32_t cursor, uint32_t f);
+    void count_striped(uint32_t f, int delta);
+    bool fan_connects_walk(uint32_t n, uint32_t ha, uint32_t hb, uint32_t r) const;
 
     /// Safe: removing the face keeps the region connected. Bridge: it does not. Unknown: the
     /// cheap tests failed and the region has cycles, so only a search can tell.
@@ -108,10 +146,10 @@ private:
         return c;
     }
     bool fan_connects(uint32_t n, uint32_t ha, uint32_t hb, uint32_t r) const;
-    /// How bidirectional_search() ended: the two sides met, or side A (of `a`) or B ran out of
-    /// faces first, or the budget ran out.
-    enum class Search : uint8_t { SideA, SideB, Met, OverBudget };
-    Search bidirectional_search(uint32_t n, uint32_t a, uint32_t b, uint32_t r, size_t budget = SIZE_MAX);
+    /// What a bidirectional search found: the sides met (a and b stay connected without n), the
+    /// island of a or of b ran out first (it is in side_[0] or side_[1]), or the budget ran out.
+    enum class SearchOutcome : uint8_t { Met, IslandOfA, IslandOfB, OverBudget };
+    SearchOutcome bidirectional_search(uint32_t n, uint32_t a, uint32_t b, uint32_t r, size_t budget = SIZE_MAX);
 
     void grow(uint32_t cursor, uint32_t region, uint32_t dest);
     uint32_t take_bridge(uint32_t cursor, uint32_t n, uint32_t region, uint32_t dest, const Classification& c);
@@ -128,17 +166,32 @@ private:
     void apply_constraints();
     [[nodiscard]] bool has_vertex(uint32_t f, uint32_t v) const {
         const auto& cv = mesh_.corner_vertices();
-        return cv[3 * f] == v || cv[3 * f + 1] == v || cv[3 * f + 2] == v;
+        return cv[he(f, 0)] == v || cv[he(f, 1)] == v || cv[he(f, 2)] == v;
     }
     uint32_t source_ = kNone, target_ = kNone;
+
+    // ---- the steps of run() ----
+    void check_request() const;
+    void prepare();
+    std::pair<uint32_t, uint32_t> choose_ends();
+    [[nodiscard]] long long surface_chi() const;
+    void mark_piece(uint32_t f);
+    uint32_t relabel_piece(uint32_t f);
+    uint32_t split_at_seed(uint32_t seed, uint32_t dest, long long chi_all);
+    void absorb_all();
+    StripResult finish();
     void check_split_budget() const;
-    SplitResult split_at(uint32_t h);
+    /// The four children of a split, as plain indices (SplitResult's, see he()).
+    struct Children {
+        uint32_t f_a, f_b, g_a, g_b;
+    };
+    Children split_at(uint32_t h);
 };
 
 void Builder::grow_arrays() {
     const uint32_t nf = mesh_.num_faces();
     striped_.resize(nf, 0);
-    region_.resize(nf, kNone);
+    region_.resize(nf, kNoRegion);
     next_.resize(nf, kNone);
     prev_.resize(nf, kNone);
     stamp_.resize(nf, 0);
@@ -146,6 +199,12 @@ void Builder::grow_arrays() {
     time_.resize(nf, kNone);
     blocked_.resize(mesh_.num_halfedges(), 0);
     vstamp_.resize(mesh_.num_vertices(), 0);
+    striped_at_.resize(mesh_.num_vertices(), 0);
+    rim_.resize(mesh_.num_vertices(), 0);
+}
+
+void Builder::count_striped(uint32_t f, int delta) {
+    for (uint32_t k = 0; k < 3; ++k) striped_at_[mesh_.corner_vertices()[he(f, k)]] += static_cast<uint32_t>(delta);
 }
 
 // chi of a set of open faces of region r: F - (passable edges inside) + (vertices whose whole
@@ -155,21 +214,21 @@ long long Builder::chi_of(const std::vector<uint32_t>& faces, uint32_t r) {
     long long inner_halfedges = 0, interior_vertices = 0;
     for (const uint32_t f : faces) {
         for (uint32_t k = 0; k < 3; ++k) {
-            const uint32_t h = 3 * f + k;
+            const uint32_t h = he(f, k);
             inner_halfedges += open_neighbor(h, r) != kNone;
-            const uint32_t v = mesh_.from(HalfedgeId(h)).idx();
+            const uint32_t v = from_of(h);
             if (vstamp_[v] == vstamp_base_) continue;
             vstamp_[v] = vstamp_base_;
             // Interior: rotating around v never leaves the region nor crosses a blocked edge.
             uint32_t g = h;
             bool interior = true;
             do {
-                const uint32_t e = Mesh::prev(HalfedgeId(g)).idx();
-                if (!passable(e) || !in_region(Mesh::face(HalfedgeId(g)).idx(), r)) {
+                const uint32_t e = prev_of(g);
+                if (!passable(e) || !in_region(face_of(g), r)) {
                     interior = false;
                     break;
                 }
-                g = mesh_.twin(HalfedgeId(e)).idx();
+                g = twin_of(e);
             } while (g != h);
             interior_vertices += interior;
         }
@@ -206,26 +265,41 @@ void Builder::insert_after(uint32_t cursor, uint32_t f) {
 void Builder::take(uint32_t cursor, uint32_t f) {
     if (striped_[f]) throw InternalError("strip builder: face " + std::to_string(f) + " taken twice");
     striped_[f] = 1;
+    count_striped(f, +1);
     time_[f] = clock_++;
+    scan_credit_ += kScanCreditPerFace;
     --region_size_[region_[f]];
     insert_after(cursor, f);
 }
 
-// Local cavity test (paper Fig. 6): walk around the vertex V shared by N's edges towards a and
-// b, starting at a and moving away from N, through open faces of r. Reaching b proves a and b
-// stay connected without N.
+// Local cavity test (paper Fig. 6): a and b (N's open neighbours across ha and hb) stay connected
+// without N if the faces around the vertex V shared by ha and hb lead from a to b, away from N,
+// through open faces of r and passable edges. That path is every face and edge around V but N
+// and its two edges, so it exists exactly when V is not on the rim (no boundary or constraint
+// edge at V) and no face around V is striped: the unstriped faces around V are then connected
+// to N, hence in N's region (a region is a connected piece of the unstriped faces). O(1), any
+// valence. (A walk around V cost O(valence) per test: quadratic on a cone's apex; a walk capped at
+// 4096 steps answered "not connected" wrongly and a closed cone failed with "fundamental
+// triangle in a region without cycles".)
 bool Builder::fan_connects(uint32_t n, uint32_t ha, uint32_t hb, uint32_t r) const {
-    const uint32_t v = mesh_.from(HalfedgeId(ha)).idx() == mesh_.to(HalfedgeId(hb)).idx() ? mesh_.from(HalfedgeId(ha)).idx()
-                                                                                          : mesh_.to(HalfedgeId(ha)).idx();
-    const uint32_t b = mesh_.neighbor(HalfedgeId(hb)).idx();
-    uint32_t g = mesh_.twin(HalfedgeId(ha)).idx();  // in face a, incident to v
-    // No cap on the degree: a cap answered "not connected" around a vertex of valence > 4096 and
-    // a closed cone then failed with "fundamental triangle in a region without cycles".
+    const uint32_t v = from_of(ha) == to_of(hb) ? from_of(ha) : to_of(ha);
+    // a shares both its edges at V with N: N closes the fan, the path would go through N.
+    const bool connects = across(ha) != across(hb) && !rim_[v] && striped_at_[v] == 0;
+    if (opt_.validate_each_split && connects != fan_connects_walk(n, ha, hb, r))
+        throw InternalError("strip builder: cavity test disagrees with the walk around vertex " + std::to_string(v));
+    return connects;
+}
+
+// The same test by walking around V (O(valence)); a cross-check in tests (validate_each_split).
+bool Builder::fan_connects_walk(uint32_t n, uint32_t ha, uint32_t hb, uint32_t r) const {
+    const uint32_t v = from_of(ha) == to_of(hb) ? from_of(ha) : to_of(ha);
+    const uint32_t b = across(hb);
+    uint32_t g = twin_of(ha);  // in face a, incident to v
     for (uint32_t guard = 0; guard <= mesh_.num_halfedges(); ++guard) {
-        const uint32_t other = mesh_.from(HalfedgeId(g)).idx() == v ? Mesh::prev(HalfedgeId(g)).idx() : Mesh::next(HalfedgeId(g)).idx();
+        const uint32_t other = from_of(g) == v ? prev_of(g) : next_of(g);
         if (!passable(other)) return false;
-        g = mesh_.twin(HalfedgeId(other)).idx();
-        const uint32_t f = Mesh::face(HalfedgeId(g)).idx();
+        g = twin_of(other);
+        const uint32_t f = face_of(g);
         if (f == b) return true;
         if (f == n || !in_region(f, r)) return false;
     }
@@ -233,44 +307,51 @@ bool Builder::fan_connects(uint32_t n, uint32_t ha, uint32_t hb, uint32_t r) con
 }
 
 // Alternating search from a and from b through open faces of r, never entering n.
-// Met if they meet (connected), else the side (A = a, B = b) that ran out first; that side's faces
-// are then in side_[0] or side_[1]. Cost O(size of the smaller island) when they are separated.
-Builder::Search Builder::bidirectional_search(uint32_t n, uint32_t a, uint32_t b, uint32_t r, size_t budget) {
+// Met if they meet (connected), else the side that ran out first (IslandOfA or IslandOfB); that
+// side's faces are then in side_[0] or side_[1]. Cost O(size of the smaller island) when they are separated.
+Builder::SearchOutcome Builder::bidirectional_search(uint32_t n, uint32_t a, uint32_t b, uint32_t r, size_t budget) {
     stamp_base_ += 2;
     if (stamp_base_ >= 0xfffffff0u) {
         std::fill(stamp_.begin(), stamp_.end(), 0);
         stamp_base_ = 2;
     }
     const uint32_t mark[2] = {stamp_base_, stamp_base_ + 1};
-    size_t head[2] = {0, 0};
-    side_[0].clear();
-    side_[1].clear();
+    size_t popped = 0;
+    for (int s = 0; s < 2; ++s) {
+        side_[s].clear();
+        stack_[s].clear();
+    }
     side_[0].push_back(a);
     side_[1].push_back(b);
+    stack_[0].push_back(a);
+    stack_[1].push_back(b);
     stamp_[a] = mark[0];
     stamp_[b] = mark[1];
     stamp_[n] = mark[0];  // never enter n (both sides treat it as foreign but not as a meeting)
     for (;;) {
-        if (head[0] + head[1] > budget) {
+        if (popped > budget) {
             stamp_[n] = 0;
-            return Search::OverBudget;
+            return SearchOutcome::OverBudget;
         }
         for (int s = 0; s < 2; ++s) {
-            if (head[s] == side_[s].size()) {
+            if (stack_[s].empty()) {
                 stamp_[n] = 0;
-                return s == 0 ? Search::SideA : Search::SideB;
+                return s == 0 ? SearchOutcome::IslandOfA : SearchOutcome::IslandOfB;
             }
-            const uint32_t f = side_[s][head[s]++];
+            const uint32_t f = stack_[s].back();
+            stack_[s].pop_back();
+            ++popped;
             for (uint32_t k = 0; k < 3; ++k) {
-                const uint32_t g = open_neighbor(3 * f + k, r);
+                const uint32_t g = open_neighbor(he(f, k), r);
                 if (g == kNone || g == n) continue;
                 if (stamp_[g] == mark[s]) continue;
                 if (stamp_[g] == mark[1 - s]) {
                     stamp_[n] = 0;
-                    return Search::Met;
+                    return SearchOutcome::Met;
                 }
                 stamp_[g] = mark[s];
                 side_[s].push_back(g);
+                stack_[s].push_back(g);
             }
         }
     }
@@ -281,7 +362,7 @@ Builder::Search Builder::bidirectional_search(uint32_t n, uint32_t a, uint32_t b
 Builder::Classification Builder::classify_local(uint32_t n, uint32_t from, uint32_t r) const {
     Classification c;
     for (uint32_t k = 0; k < 3; ++k) {
-        const uint32_t h = 3 * n + k;
+        const uint32_t h = he(n, k);
         const uint32_t g = open_neighbor(h, r);
         if (g == kNone || g == from) continue;
         if (c.a == kNone) {
@@ -303,10 +384,10 @@ Builder::Classification Builder::classify_local(uint32_t n, uint32_t from, uint3
 // (faces visited) it may return false: still Unknown.
 bool Builder::resolve(Classification& c, uint32_t n, uint32_t r, size_t budget) {
     if (c.kind == Kind::Safe || (c.kind == Kind::Bridge && c.small_side != kNone && searched_ == n)) return true;
-    const Search s = bidirectional_search(n, c.a, c.b, r, budget);
+    const SearchOutcome s = bidirectional_search(n, c.a, c.b, r, budget);
     searched_ = n;
-    if (s == Search::OverBudget) return false;
-    if (s == Search::Met) {
+    if (s == SearchOutcome::OverBudget) return false;
+    if (s == SearchOutcome::Met) {
         // A split candidate that is not a bridge (§3.1). Impossible in a disk.
         if (region_beta_[r] <= 0)
             throw InternalError("strip builder: fundamental triangle in a region without cycles (topology tracking broken)");
@@ -315,7 +396,7 @@ bool Builder::resolve(Classification& c, uint32_t n, uint32_t r, size_t budget) 
         return true;
     }
     c.kind = Kind::Bridge;
-    c.small_side = s == Search::SideA ? 0 : 1;
+    c.small_side = s == SearchOutcome::IslandOfA ? 0 : 1;
     return true;
 }
 
@@ -332,18 +413,27 @@ void Builder::defer(uint32_t region, uint32_t anchor) {
 }
 
 // Splits the edge of h at its midpoint, keeping the per-face and per-half-edge state in step.
-SplitResult Builder::split_at(uint32_t h) {
+Builder::Children Builder::split_at(uint32_t h) {
     // Constraint flags of the two half-edges that split_edge moves into new faces.
-    const uint32_t moved_f = Mesh::next(HalfedgeId(h)).idx(), moved_g = Mesh::next(mesh_.twin(HalfedgeId(h))).idx();
+    const uint32_t moved_f = next_of(h), moved_g = next_of(twin_of(h));
     const uint8_t blocked_f = blocked_[moved_f], blocked_g = blocked_[moved_g];
-    const SplitResult s = mesh_.split_edge(HalfedgeId(h));
+    // The children of a striped face are striped (the host's in absorb()).
+    const uint8_t striped_f = striped_[face_of(h)], striped_g = striped_[face_of(twin_of(h))];
+    if (striped_f) count_striped(face_of(h), -1);
+    if (striped_g) count_striped(face_of(twin_of(h)), -1);
+    const SplitResult r = mesh_.split_edge(HalfedgeId(h));
+    const Children s{r.f_a.idx(), r.f_b.idx(), r.g_a.idx(), r.g_b.idx()};
     ++stats_.splits;
     check_split_budget();
     grow_arrays();
+    striped_[s.f_b] = striped_f;
+    striped_[s.g_a] = striped_g;
+    for (const uint32_t f : {s.f_a, s.f_b, s.g_a, s.g_b})
+        if (striped_[f]) count_striped(f, +1);
     blocked_[moved_f] = 0;
     blocked_[moved_g] = 0;
-    blocked_[3 * s.f_b.idx() + 1] = blocked_f;
-    blocked_[3 * s.g_a.idx() + 1] = blocked_g;
+    blocked_[he(s.f_b, 1)] = blocked_f;
+    blocked_[he(s.g_a, 1)] = blocked_g;
     if (opt_.validate_each_split) mesh_.validate();
     return s;
 }
@@ -366,7 +456,7 @@ void Builder::grow(uint32_t cursor, uint32_t region, uint32_t dest) {
         uint32_t nc = 0;
         bool dest_adjacent = false;
         for (uint32_t k = 0; k < 3; ++k) {
-            const uint32_t h = 3 * t + k;
+            const uint32_t h = he(t, k);
             const uint32_t g = open_neighbor(h, region);
             if (g == kNone) continue;
             if (g == dest && region_size_[region] > 1) {
@@ -385,12 +475,12 @@ void Builder::grow(uint32_t cursor, uint32_t region, uint32_t dest) {
                 if (c.kind == Kind::Bridge) {
                     const uint32_t large_he = c.small_side == 0 ? c.hb : c.ha;
                     const uint32_t large = take_bridge(t, dest, region, kNone, c);
-                    defer(large, mesh_.twin(HalfedgeId(large_he)).idx());
+                    defer(large, twin_of(large_he));
                     return;
                 }
                 if (c.fundamental) note_fundamental(dest, region);
                 take(t, dest);
-                defer(region, mesh_.twin(HalfedgeId(c.ha)).idx());
+                defer(region, twin_of(c.ha));
                 return;
             }
             throw InternalError("strip builder: strip stuck with " + std::to_string(region_size_[region]) +
@@ -398,9 +488,9 @@ void Builder::grow(uint32_t cursor, uint32_t region, uint32_t dest) {
         }
         // Turn of each candidate relative to the in-edge of t.
         const uint32_t pv = prev_[t];
-        const uint32_t hin = pv == kNone ? kNone : mesh_.shared_halfedge(FaceId(t), FaceId(pv)).idx();
+        const uint32_t hin = pv == kNone ? kNone : shared_of(t, pv);
         int turn[3] = {0, 0, 0};
-        for (uint32_t i = 0; i < nc; ++i) turn[i] = hin == kNone ? 0 : (hc[i] == Mesh::next(HalfedgeId(hin)).idx() ? +1 : -1);
+        for (uint32_t i = 0; i < nc; ++i) turn[i] = hin == kNone ? 0 : (hc[i] == next_of(hin) ? +1 : -1);
         // Order: greedy = fewer open neighbours first (Warnsdorff), ties alternate the turn;
         // paper = keep the same turn direction as before.
         uint32_t idx[3] = {0, 1, 2};
@@ -422,11 +512,13 @@ void Builder::grow(uint32_t cursor, uint32_t region, uint32_t dest) {
         const uint32_t considered = opt_.greedy ? nc : 1;
         uint32_t chosen = kNone;
         Classification cls[3];
-        for (uint32_t i = 0; i < considered; ++i) cls[i] = classify_local(cand[idx[i]], t, region);
         // In preference order: safe by the cheap tests, or by a search of bounded cost (O(1)
-        // per step, so a long search is never spent on a face we might not take).
+        // per step, so a long search is never spent on a face we might not take). The cheap
+        // tests of a candidate run only when the ones before it are not safe (a cavity test
+        // around a high-valence vertex is not O(1) either).
         constexpr size_t kFirstBudget = 256;
         for (uint32_t i = 0; i < considered && chosen == kNone; ++i) {
+            cls[i] = classify_local(cand[idx[i]], t, region);
             if (cls[i].kind == Kind::Unknown) resolve(cls[i], cand[idx[i]], region, kFirstBudget);
             if (cls[i].kind == Kind::Safe) chosen = i;
         }
@@ -484,10 +576,10 @@ uint32_t Builder::take_bridge(uint32_t cursor, uint32_t n, uint32_t region, uint
         dest_in_small |= f == dest;
     }
     if (dest_in_small) {
-        defer(region, mesh_.twin(HalfedgeId(large_he)).idx());
+        defer(region, twin_of(large_he));
         return r_small;
     }
-    defer(r_small, mesh_.twin(HalfedgeId(small_he)).idx());
+    defer(r_small, twin_of(small_he));
     return region;
 }
 
@@ -510,10 +602,10 @@ void Builder::absorb(uint32_t record) {
     d.done = true;
     const uint32_t region = d.region;
     const uint32_t ha = d.anchor;  // in the anchor face
-    const uint32_t hh = mesh_.twin(HalfedgeId(ha)).idx();
+    const uint32_t hh = twin_of(ha);
     if (hh == kNone) throw InternalError("strip builder: deferred region lost its host");
-    const uint32_t host = Mesh::face(HalfedgeId(hh)).idx();
-    const uint32_t anchor = Mesh::face(HalfedgeId(ha)).idx();
+    const uint32_t host = face_of(hh);
+    const uint32_t anchor = face_of(ha);
     if (!striped_[host] || !in_region(anchor, region))
         throw InternalError("strip builder: deferred region " + std::to_string(region) + " has a bad anchor");
     if (try_detour(region, anchor)) return;
@@ -523,28 +615,27 @@ void Builder::absorb(uint32_t record) {
         return;
     }
     const uint32_t p = prev_[host], n = next_[host];
-    const SplitResult s = split_at(hh);
-    striped_[s.f_b.idx()] = 1;
-    region_[s.f_b.idx()] = kNone;
-    fundamental_[s.f_b.idx()] = fundamental_[host];
-    time_[s.f_b.idx()] = time_[host];
-    region_[s.g_a.idx()] = region;
+    const Children s = split_at(hh);
+    region_[s.f_b] = kNoRegion;
+    fundamental_[s.f_b] = fundamental_[host];
+    time_[s.f_b] = time_[host];
+    region_[s.g_a] = region;
     ++region_size_[region];
     // c0 keeps the host's in-edge, c1 its out-edge; a0 is the anchor child beside c0.
     bool fa_first;
     if (p != kNone)
-        fa_first = mesh_.shared_halfedge(s.f_a, FaceId(p)).idx() != kNone;
+        fa_first = shared_of(s.f_a, p) != kNone;
     else if (n != kNone)
-        fa_first = mesh_.shared_halfedge(s.f_a, FaceId(n)).idx() == kNone;
+        fa_first = shared_of(s.f_a, n) == kNone;
     else
-        fa_first = source_ == kNone || has_vertex(s.f_a.idx(), source_);
-    const uint32_t c0 = fa_first ? s.f_a.idx() : s.f_b.idx(), c1 = fa_first ? s.f_b.idx() : s.f_a.idx();
-    const uint32_t a0 = fa_first ? s.g_a.idx() : s.g_b.idx(), a1 = fa_first ? s.g_b.idx() : s.g_a.idx();
+        fa_first = source_ == kNone || has_vertex(s.f_a, source_);
+    const uint32_t c0 = fa_first ? s.f_a : s.f_b, c1 = fa_first ? s.f_b : s.f_a;
+    const uint32_t a0 = fa_first ? s.g_a : s.g_b, a1 = fa_first ? s.g_b : s.g_a;
     // Host slot (index f_a) becomes c0 -> c1.
     if (fa_first)
-        insert_after(s.f_a.idx(), s.f_b.idx());
+        insert_after(s.f_a, s.f_b);
     else
-        insert_after(p, s.f_b.idx());  // p == kNone inserts at the head
+        insert_after(p, s.f_b);  // p == kNone inserts at the head
     // Normally the region goes between the children: c0 -> a0 ... a1 -> c1. At the ends of the
     // strip the region may instead go first (a1 ... a0 -> c0 -> c1) or last (c0 -> c1 -> a1 ... a0)
     // so that the first face keeps the source vertex and the last face the target (§5.2).
@@ -567,35 +658,38 @@ void Builder::absorb(uint32_t record) {
 // strip r1 ... r2 goes between them and no split is needed. O(min(region size, kScanLimit)).
 bool Builder::try_detour(uint32_t region, uint32_t anchor) {
     // Only the part of the region near its anchor is examined (a large region deferred again and
-    // again inside nested splices would otherwise be scanned each time: quadratic).
-    constexpr size_t kScanLimit = 1024;
+    // again inside nested splices would otherwise be scanned each time: quadratic), and no more
+    // than the credit earned by the faces taken so far (many absorbs of large regions without a
+    // detour, as between parallel holes, would otherwise cost kScanLimit each).
+    const size_t limit = std::max(kScanMinimum, std::min(kScanLimit, scan_credit_));
     scratch_.clear();
     scratch_.push_back(anchor);
     stamp_base_ += 2;
     stamp_[anchor] = stamp_base_;
-    for (size_t i = 0; i < scratch_.size() && scratch_.size() < kScanLimit; ++i) {
+    for (size_t i = 0; i < scratch_.size() && scratch_.size() < limit; ++i) {
         const uint32_t f = scratch_[i];
         for (uint32_t k = 0; k < 3; ++k) {
-            const uint32_t g = open_neighbor(3 * f + k, region);
+            const uint32_t g = open_neighbor(he(f, k), region);
             if (g != kNone && stamp_[g] != stamp_base_) {
                 stamp_[g] = stamp_base_;
                 scratch_.push_back(g);
             }
         }
     }
+    scan_credit_ -= std::min(scan_credit_, scratch_.size());
     const bool single = region_size_[region] == 1;
     for (const uint32_t r1 : scratch_) {
         for (uint32_t k = 0; k < 3; ++k) {
-            const uint32_t h = 3 * r1 + k;
+            const uint32_t h = he(r1, k);
             if (!passable(h)) continue;
-            const uint32_t x = mesh_.neighbor(HalfedgeId(h)).idx();
+            const uint32_t x = across(h);
             if (!striped_[x]) continue;
             const uint32_t y = next_[x];
             if (y == kNone) continue;
             for (uint32_t j = 0; j < 3; ++j) {
-                const uint32_t hy = 3 * y + j;
+                const uint32_t hy = he(y, j);
                 if (!passable(hy)) continue;
-                const uint32_t r2 = mesh_.neighbor(HalfedgeId(hy)).idx();
+                const uint32_t r2 = across(hy);
                 if (!in_region(r2, region) || (r2 == r1) != single) continue;
                 ++stats_.detours;
                 const uint32_t r = take_forced(x, r1, region, single ? kNone : r2);
@@ -609,13 +703,13 @@ bool Builder::try_detour(uint32_t region, uint32_t anchor) {
 
 bool Builder::absorb_at_tail() {
     for (uint32_t k = 0; k < 3; ++k) {
-        const uint32_t h = 3 * tail_ + k;
+        const uint32_t h = he(tail_, k);
         if (!passable(h)) continue;
-        const uint32_t g = mesh_.neighbor(HalfedgeId(h)).idx();
+        const uint32_t g = across(h);
         if (striped_[g]) continue;
         const uint32_t rec = deferred_of_region_[region_[g]];
         if (rec == kNone || deferred_[rec].done) continue;
-        deferred_[rec].anchor = mesh_.twin(HalfedgeId(h)).idx();
+        deferred_[rec].anchor = twin_of(h);
         absorb(rec);
         return true;
     }
@@ -631,7 +725,7 @@ uint32_t Builder::choose_seed() const {
     int best_score = -1;
     for (uint32_t f = 0; f < nf; ++f) {
         int closed = 0;
-        for (uint32_t k = 0; k < 3; ++k) closed += !passable(3 * f + k);
+        for (uint32_t k = 0; k < 3; ++k) closed += !passable(he(f, k));
         const int score = closed >= 3 ? 0 : closed;
         if (score > best_score) {
             best_score = score;
@@ -646,21 +740,21 @@ uint32_t Builder::choose_seed() const {
 // true). Rotates both ways from v's half-edge, since the fan may be open. O(degree of v).
 template <class Fn>
 bool Builder::for_each_outgoing(uint32_t v, Fn&& fn) const {
-    const uint32_t h0 = mesh_.vertex_halfedge(VertexId(v)).idx();
+    const uint32_t h0 = vertex_he_of(v);
     if (h0 == kNone) return false;
     uint32_t h = h0;
     for (uint32_t guard = 0; guard <= mesh_.num_halfedges(); ++guard) {
         if (fn(h)) return true;
-        const uint32_t t = mesh_.twin(Mesh::prev(HalfedgeId(h))).idx();
+        const uint32_t t = twin_of(prev_of(h));
         if (t == kNone) break;
         if (t == h0) return false;  // closed fan: every half-edge seen
         h = t;
     }
     h = h0;
     for (uint32_t guard = 0; guard <= mesh_.num_halfedges(); ++guard) {
-        const uint32_t t = mesh_.twin(HalfedgeId(h)).idx();
+        const uint32_t t = twin_of(h);
         if (t == kNone) break;
-        h = Mesh::next(HalfedgeId(t)).idx();
+        h = next_of(t);
         if (h == h0) break;
         if (fn(h)) return true;
     }
@@ -672,10 +766,10 @@ uint32_t Builder::find_edge(uint32_t u, uint32_t v) const {
     if (u >= mesh_.num_vertices() || v >= mesh_.num_vertices()) return kNone;
     uint32_t found = kNone;
     for_each_outgoing(u, [&](uint32_t h) {
-        if (mesh_.to(HalfedgeId(h)).idx() == v)
+        if (to_of(h) == v)
             found = h;
-        else if (mesh_.from(Mesh::prev(HalfedgeId(h))).idx() == v)
-            found = Mesh::prev(HalfedgeId(h)).idx();
+        else if (from_of(prev_of(h)) == v)
+            found = prev_of(h);
         return found != kNone;
     });
     return found;
@@ -689,7 +783,7 @@ void Builder::apply_constraints() {
             throw RequestError("constraint " + std::to_string(index) + ": (" + std::to_string(u) + ", " + std::to_string(v) +
                                ") is not an edge of the mesh");
         blocked_[h] = 1;
-        if (mesh_.twin(HalfedgeId(h)).idx() != kNone) blocked_[mesh_.twin(HalfedgeId(h)).idx()] = 1;
+        if (twin_of(h) != kNone) blocked_[twin_of(h)] = 1;
         ++index;
     }
     if (opt_.constraint_edges.empty()) return;
@@ -708,9 +802,9 @@ void Builder::apply_constraints() {
             stack.pop_back();
             ++sizes[id];
             for (uint32_t k = 0; k < 3; ++k) {
-                const uint32_t h = 3 * f + k;
+                const uint32_t h = he(f, k);
                 if (!passable(h)) continue;
-                const uint32_t g = mesh_.neighbor(HalfedgeId(h)).idx();
+                const uint32_t g = across(h);
                 if (piece[g] == kNone) {
                     piece[g] = id;
                     stack.push_back(g);
@@ -734,9 +828,9 @@ uint32_t Builder::face_at_vertex(uint32_t v, uint32_t avoid) const {
     uint32_t best = kNone;
     int best_score = -1;
     for_each_outgoing(v, [&](uint32_t h) {
-        const uint32_t f = Mesh::face(HalfedgeId(h)).idx();
+        const uint32_t f = face_of(h);
         int score = 0;
-        for (uint32_t k = 0; k < 3; ++k) score += !passable(3 * f + k);
+        for (uint32_t k = 0; k < 3; ++k) score += !passable(he(f, k));
         if (f == avoid) score = -1;
         if (score > best_score || best == kNone) {
             best_score = score;
@@ -747,7 +841,8 @@ uint32_t Builder::face_at_vertex(uint32_t v, uint32_t avoid) const {
     return best;
 }
 
-StripResult Builder::run() {
+// Rejects requests that cannot be met before anything is built.
+void Builder::check_request() const {
     const uint32_t nf = mesh_.num_faces();
     if (nf == 0) throw InputError("mesh has no faces");
     if (opt_.seed_face && opt_.seed_face->idx() >= nf)
@@ -757,140 +852,172 @@ StripResult Builder::run() {
         if (v >= mesh_.num_input_vertices())
             throw RequestError(std::string(what) + " vertex " + std::to_string(v) + " is out of range (mesh has " +
                                std::to_string(mesh_.num_input_vertices()) + " vertices)");
-        if (mesh_.vertex_halfedge(VertexId(v)).idx() == kNone)
-            throw RequestError(std::string(what) + " vertex " + std::to_string(v) + " is not used by any face");
+        if (vertex_he_of(v) == kNone) throw RequestError(std::string(what) + " vertex " + std::to_string(v) + " is not used by any face");
     };
     if (opt_.source) check_vertex("source", opt_.source->idx());
     if (opt_.target) check_vertex("target", opt_.target->idx());
-    if (opt_.seed_face && opt_.source) {
-        const uint32_t f = opt_.seed_face->idx();
-        const auto& cv = mesh_.corner_vertices();
-        if (cv[3 * f] != opt_.source->idx() && cv[3 * f + 1] != opt_.source->idx() && cv[3 * f + 2] != opt_.source->idx())
-            throw RequestError("seed face " + std::to_string(f) + " is not incident to source vertex " +
-                               std::to_string(opt_.source->idx()));
-    }
+    if (opt_.seed_face && opt_.source && !has_vertex(opt_.seed_face->idx(), opt_.source->idx()))
+        throw RequestError("seed face " + std::to_string(opt_.seed_face->idx()) + " is not incident to source vertex " +
+                           std::to_string(opt_.source->idx()));
+}
+
+// Per-face state, constraints, the rim flags of the cavity test, the input's statistics, and
+// region 0 holding every face.
+void Builder::prepare() {
     grow_arrays();
     apply_constraints();
-    stats_.input_triangles = nf;
+    for (uint32_t h = 0; h < mesh_.num_halfedges(); ++h)
+        if (!passable(h)) rim_[from_of(h)] = rim_[to_of(h)] = 1;
+    stats_.input_triangles = mesh_.num_faces();
     stats_.boundary_loops = mesh_.num_boundary_loops();
     stats_.genus = mesh_.genus();
     source_ = opt_.source ? opt_.source->idx() : kNone;
     target_ = opt_.target ? opt_.target->idx() : kNone;
-
-    const uint32_t r0 = new_region(nf);
+    const uint32_t r0 = new_region(mesh_.num_faces());
     std::fill(region_.begin(), region_.end(), r0);
+}
+
+// The first face (seed) and the face the strip must end with (dest, kNone without a target).
+std::pair<uint32_t, uint32_t> Builder::choose_ends() {
+    const uint32_t nf = mesh_.num_faces();
+    const uint32_t r0 = 0;
     uint32_t seed = opt_.seed_face ? opt_.seed_face->idx() : opt_.source ? face_at_vertex(opt_.source->idx(), kNone) : choose_seed();
-    uint32_t dest = kNone;
-    if (opt_.target) {
-        dest = face_at_vertex(opt_.target->idx(), seed);
-        if (dest == seed && nf > 1) {
-            // The target's only face is the first face: split it across the edge opposite the
-            // target so that both children touch the target; start in one, end in the other.
-            uint32_t h = 3 * seed;
-            while (mesh_.from(HalfedgeId(h)).idx() == target_ || mesh_.to(HalfedgeId(h)).idx() == target_) ++h;
-            if (!passable(h))
-                throw RequestError("cannot end at target vertex " + std::to_string(target_) +
-                                   ": its only face is the first face of the strip and cannot be split");
-            const SplitResult sr = split_at(h);
-            const bool a_first = source_ == kNone || has_vertex(sr.f_a.idx(), source_);
-            seed = a_first ? sr.f_a.idx() : sr.f_b.idx();
-            dest = a_first ? sr.f_b.idx() : sr.f_a.idx();
-            for (uint32_t f : {sr.f_b.idx(), sr.g_a.idx()}) region_[f] = r0;
-            region_size_[r0] += 2;
-        }
-        if (nf == 1) dest = kNone;
+    if (!opt_.target) return {seed, kNone};
+    uint32_t dest = face_at_vertex(opt_.target->idx(), seed);
+    if (dest == seed && nf > 1) {
+        // The target's only face is the first face: split it across the edge opposite the
+        // target so that both children touch the target; start in one, end in the other.
+        uint32_t h = he(seed, 0);
+        while (from_of(h) == target_ || to_of(h) == target_) ++h;
+        if (!passable(h))
+            throw RequestError("cannot end at target vertex " + std::to_string(target_) +
+                               ": its only face is the first face of the strip and cannot be split");
+        const Children sr = split_at(h);
+        const bool a_first = source_ == kNone || has_vertex(sr.f_a, source_);
+        seed = a_first ? sr.f_a : sr.f_b;
+        dest = a_first ? sr.f_b : sr.f_a;
+        for (uint32_t f : {sr.f_b, sr.g_a}) region_[f] = r0;
+        region_size_[r0] += 2;
     }
-    // Betti number of the whole surface (through passable edges), to tell whether the seed itself
-    // is a fundamental triangle (a face joining two boundary loops, paper Fig. 4).
-    long long beta_all = 0;
-    {
-        std::vector<uint32_t> all(mesh_.num_faces());
-        std::iota(all.begin(), all.end(), 0u);
-        beta_all = 1 - chi_of(all, r0);
-    }
-    take(kNone, seed);
-    // The seed may cut U apart (up to three pieces): label each piece; grow the one holding the
-    // destination (or the first) and defer the others, anchored at the seed.
-    uint32_t grow_region = r0;
-    {
-        uint32_t nbr[3], he[3], cnt = 0;
+    if (nf == 1) dest = kNone;
+    return {seed, dest};
+}
+
+// chi of the whole surface (through passable edges) before anything is taken: chi_of() of every
+// face, where an interior vertex is one off the rim (a flat pass, no walk around the vertices).
+long long Builder::surface_chi() const {
+    long long passable_halfedges = 0, interior_vertices = 0;
+    for (uint32_t h = 0; h < mesh_.num_halfedges(); ++h) passable_halfedges += passable(h);
+    for (uint32_t v = 0; v < mesh_.num_vertices(); ++v) interior_vertices += vertex_he_of(v) != kNone && !rim_[v];
+    return static_cast<long long>(mesh_.num_faces()) - passable_halfedges / 2 + interior_vertices;
+}
+
+// Marks (stamp_base_) the faces of region 0 reachable from f without crossing striped faces.
+void Builder::mark_piece(uint32_t f) {
+    stamp_base_ += 2;
+    stamp_[f] = stamp_base_;
+    scratch_.assign(1, f);
+    while (!scratch_.empty()) {
+        const uint32_t x = scratch_.back();
+        scratch_.pop_back();
         for (uint32_t k = 0; k < 3; ++k) {
-            const uint32_t g = open_neighbor(3 * seed + k, r0);
-            if (g != kNone) {
-                nbr[cnt] = g;
-                he[cnt++] = 3 * seed + k;
+            const uint32_t g = open_neighbor(he(x, k), 0);
+            if (g != kNone && stamp_[g] != stamp_base_) {
+                stamp_[g] = stamp_base_;
+                scratch_.push_back(g);
             }
-        }
-        uint32_t piece_region[3] = {r0, kNone, kNone};
-        for (uint32_t i = 1; i < cnt; ++i) {
-            // Flood the pieces of the earlier neighbours first time only (lazy): a piece already
-            // relabelled is recognised by its region.
-            if (i == 1) {
-                std::vector<uint32_t> stack{nbr[0]};
-                stamp_base_ += 2;
-                stamp_[nbr[0]] = stamp_base_;
-                while (!stack.empty()) {
-                    const uint32_t f = stack.back();
-                    stack.pop_back();
-                    for (uint32_t k = 0; k < 3; ++k) {
-                        const uint32_t g = open_neighbor(3 * f + k, r0);
-                        if (g != kNone && stamp_[g] != stamp_base_) {
-                            stamp_[g] = stamp_base_;
-                            stack.push_back(g);
-                        }
-                    }
-                }
-            }
-            if (stamp_[nbr[i]] == stamp_base_) {
-                piece_region[i] = r0;
-                continue;
-            }
-            if (region_[nbr[i]] != r0) {
-                piece_region[i] = region_[nbr[i]];
-                continue;
-            }
-            const uint32_t r = new_region(0);
-            piece_region[i] = r;
-            std::vector<uint32_t> st{nbr[i]};
-            region_[nbr[i]] = r;
-            while (!st.empty()) {
-                const uint32_t f = st.back();
-                st.pop_back();
-                ++region_size_[r];
-                --region_size_[r0];
-                for (uint32_t k = 0; k < 3; ++k) {
-                    const uint32_t g = open_neighbor(3 * f + k, r0);
-                    if (g != kNone) {
-                        region_[g] = r;
-                        st.push_back(g);
-                    }
-                }
-            }
-        }
-        // Betti numbers of the pieces (one O(F) pass at the start).
-        std::vector<std::vector<uint32_t>> members(region_size_.size());
-        for (uint32_t f = 0; f < mesh_.num_faces(); ++f)  // faces of a target pre-split too
-            if (!striped_[f]) members[region_[f]].push_back(f);
-        for (uint32_t r = 0; r < members.size(); ++r)
-            if (!members[r].empty()) region_beta_[r] = 1 - chi_of(members[r], r);
-        long long beta_pieces = 0;
-        for (uint32_t r = 0; r < members.size(); ++r) beta_pieces += members[r].empty() ? 0 : region_beta_[r];
-        if (beta_all > beta_pieces) {
-            fundamental_[seed] = 1;
-            stats_.fundamental_triangles += static_cast<uint32_t>(beta_all - beta_pieces);
-        }
-        if (dest != kNone) grow_region = region_[dest];
-        std::vector<uint32_t> done_regions{grow_region};
-        for (uint32_t i = 0; i < cnt; ++i) {
-            const uint32_t r = piece_region[i];
-            if (std::find(done_regions.begin(), done_regions.end(), r) != done_regions.end()) continue;
-            done_regions.push_back(r);
-            defer(r, mesh_.twin(HalfedgeId(he[i])).idx());
         }
     }
-    grow(seed, grow_region, dest);
-    // Splice deferred regions: first any that touch the tail (free), then the rest, newest first
-    // (absorbing one may defer more).
+}
+
+// Moves the piece of region 0 holding f (not connected to the first piece) to a new region.
+uint32_t Builder::relabel_piece(uint32_t f) {
+    const uint32_t r = new_region(0);
+    region_[f] = r;
+    scratch_.assign(1, f);
+    while (!scratch_.empty()) {
+        const uint32_t x = scratch_.back();
+        scratch_.pop_back();
+        ++region_size_[r];
+        --region_size_[0];
+        for (uint32_t k = 0; k < 3; ++k) {
+            const uint32_t g = open_neighbor(he(x, k), 0);
+            if (g != kNone) {
+                region_[g] = r;
+                scratch_.push_back(g);
+            }
+        }
+    }
+    return r;
+}
+
+// The seed (already taken) may cut U apart, into up to three pieces: labels each piece, sets
+// their Betti numbers, notes the seed as fundamental if it lowered the total (a face joining
+// two boundary loops, paper Fig. 4), defers every piece but the one to grow (the destination's,
+// or the first), anchored at the seed. Returns the region to grow. chi_all: surface_chi().
+uint32_t Builder::split_at_seed(uint32_t seed, uint32_t dest, long long chi_all) {
+    const long long beta_all = 1 - chi_all;
+    uint32_t nbr[3], arm[3], cnt = 0;
+    for (uint32_t k = 0; k < 3; ++k) {
+        const uint32_t g = open_neighbor(he(seed, k), 0);
+        if (g != kNone) {
+            nbr[cnt] = g;
+            arm[cnt++] = he(seed, k);
+        }
+    }
+    if (cnt <= 1) {
+        // One piece: chi_of() of every face but the seed, from chi_all without another pass. The
+        // seed takes one face and its cnt passable edges away, and its vertices off the rim are
+        // no longer interior (their fans hold a striped face). Beta cannot drop: not fundamental.
+        if (cnt == 0) return 0;
+        long long interior = 0;
+        for (uint32_t k = 0; k < 3; ++k) interior += !rim_[from_of(he(seed, k))];
+        region_beta_[0] = beta_all + 1 - cnt + interior;
+        if (opt_.validate_each_split) {  // tests: the same by chi_of() and a walk around every vertex
+            std::vector<uint32_t> rest;
+            for (uint32_t f = 0; f < mesh_.num_faces(); ++f)
+                if (!striped_[f]) rest.push_back(f);
+            if (region_beta_[0] != 1 - chi_of(rest, 0)) throw InternalError("strip builder: Betti number after the seed is wrong");
+        }
+        return 0;
+    }
+    uint32_t piece_region[3] = {0, kNone, kNone};
+    for (uint32_t i = 1; i < cnt; ++i) {
+        if (i == 1) mark_piece(nbr[0]);  // the first neighbour's piece keeps region 0
+        if (stamp_[nbr[i]] == stamp_base_)
+            piece_region[i] = 0;
+        else if (region_[nbr[i]] != 0)  // relabelled with an earlier neighbour
+            piece_region[i] = region_[nbr[i]];
+        else
+            piece_region[i] = relabel_piece(nbr[i]);
+    }
+    std::vector<std::vector<uint32_t>> members(region_size_.size());
+    for (uint32_t f = 0; f < mesh_.num_faces(); ++f)  // faces of a target pre-split too
+        if (!striped_[f]) members[region_[f]].push_back(f);
+    long long beta_pieces = 0;
+    for (uint32_t r = 0; r < members.size(); ++r) {
+        if (members[r].empty()) continue;
+        region_beta_[r] = 1 - chi_of(members[r], r);
+        beta_pieces += region_beta_[r];
+    }
+    if (beta_all > beta_pieces) {
+        fundamental_[seed] = 1;
+        stats_.fundamental_triangles += static_cast<uint32_t>(beta_all - beta_pieces);
+    }
+    const uint32_t grow_region = dest != kNone ? region_[dest] : 0;
+    std::vector<uint32_t> done_regions{grow_region};
+    for (uint32_t i = 0; i < cnt; ++i) {
+        const uint32_t r = piece_region[i];
+        if (std::find(done_regions.begin(), done_regions.end(), r) != done_regions.end()) continue;
+        done_regions.push_back(r);
+        defer(r, twin_of(arm[i]));
+    }
+    return grow_region;
+}
+
+// Splices the deferred regions: first any that touch the tail (free), then the rest, newest
+// first (absorbing one may defer more).
+void Builder::absorb_all() {
     for (;;) {
         if (target_ == kNone && absorb_at_tail()) continue;
         uint32_t rec = kNone;
@@ -904,7 +1031,10 @@ StripResult Builder::run() {
         if (rec == kNone) break;
         absorb(rec);
     }
+}
 
+// The strip's faces in order, the positions of fundamental triangles, and the swap count.
+StripResult Builder::finish() {
     StripResult result;
     result.order.reserve(mesh_.num_faces());
     for (uint32_t f = head_; f != kNone; f = next_[f]) {
@@ -918,10 +1048,10 @@ StripResult Builder::run() {
     // Swaps: two consecutive turns in the same direction.
     int prev_turn = 0;
     for (size_t i = 1; i + 1 < result.order.size(); ++i) {
-        const uint32_t hin = mesh_.shared_halfedge(FaceId(result.order[i]), FaceId(result.order[i - 1])).idx();
-        const uint32_t hout = mesh_.shared_halfedge(FaceId(result.order[i]), FaceId(result.order[i + 1])).idx();
+        const uint32_t hin = shared_of(result.order[i], result.order[i - 1]);
+        const uint32_t hout = shared_of(result.order[i], result.order[i + 1]);
         if (hin == kNone || hout == kNone) throw InternalError("strip builder: consecutive faces do not share an edge");
-        const int turn = hout == Mesh::next(HalfedgeId(hin)).idx() ? +1 : -1;
+        const int turn = hout == next_of(hin) ? +1 : -1;
         if (turn == prev_turn) ++stats_.swaps;
         prev_turn = turn;
     }
@@ -930,6 +1060,23 @@ StripResult Builder::run() {
     result.take_time = std::move(time_);
     result.mesh = std::move(mesh_);
     return result;
+}
+
+StripResult Builder::run() {
+    check_request();
+    prepare();
+    const auto [seed, dest] = choose_ends();
+    const long long chi_all = surface_chi();
+    if (opt_.validate_each_split) {  // tests: the same by chi_of()
+        std::vector<uint32_t> all(mesh_.num_faces());
+        std::iota(all.begin(), all.end(), 0u);
+        if (chi_all != chi_of(all, 0)) throw InternalError("strip builder: chi of the surface is wrong");
+    }
+    take(kNone, seed);
+    const uint32_t region = split_at_seed(seed, dest, chi_all);
+    grow(seed, region, dest);
+    absorb_all();
+    return finish();
 }
 
 }  // namespace
