@@ -13,7 +13,7 @@
 namespace singlestrip {
 
 std::vector<std::pair<uint32_t, uint32_t>> read_constraints(const std::string& path, uint32_t num_vertices,
-                                                             std::vector<uint32_t>* line_of_pair) {
+                                                            std::vector<uint32_t>* line_of_pair) {
     std::ifstream in(path);
     if (!in) throw InputError(path + ": cannot open constraint file (" + std::strerror(errno) + ")");
     std::vector<std::pair<uint32_t, uint32_t>> pairs;
@@ -35,7 +35,8 @@ std::vector<std::pair<uint32_t, uint32_t>> read_constraints(const std::string& p
                 throw InputError(where + "vertex " + tok + " is out of range (the mesh has " + std::to_string(num_vertices) + " vertices)");
             poly.push_back(static_cast<uint32_t>(v));
         }
-        if (poly.size() == 1) throw InputError(path + ": line " + std::to_string(lineno) + ": a constraint polyline needs at least 2 vertices");
+        if (poly.size() == 1)
+            throw InputError(path + ": line " + std::to_string(lineno) + ": a constraint polyline needs at least 2 vertices");
         for (std::size_t i = 0; i + 1 < poly.size(); ++i) {
             pairs.emplace_back(poly[i], poly[i + 1]);
             if (line_of_pair) line_of_pair->push_back(static_cast<uint32_t>(lineno));

@@ -75,13 +75,13 @@ std::vector<Point3> vertex_normals(const std::vector<Point3>& points, const std:
 
 void write_gltf_strip(const std::string& path, const StripArrays& a, const std::vector<uint32_t>& strip_indices) {
     const std::string ext = lower_extension(path);
-    if (ext != ".glb" && ext != ".gltf")
-        throw RequestError(path + ": glTF output needs the extension .glb or .gltf");
+    if (ext != ".glb" && ext != ".gltf") throw RequestError(path + ": glTF output needs the extension .glb or .gltf");
     if (strip_indices.empty() || a.faces.empty()) throw RequestError(path + ": nothing to write (empty strip)");
     const size_t nv = a.points.size();
     uint32_t max_index = 0;
     for (uint32_t i : strip_indices) {
-        if (i >= nv) throw RequestError(path + ": strip index " + std::to_string(i) + " is out of range (" + std::to_string(nv) + " vertices)");
+        if (i >= nv)
+            throw RequestError(path + ": strip index " + std::to_string(i) + " is out of range (" + std::to_string(nv) + " vertices)");
         max_index = std::max(max_index, i);
     }
     const bool short_indices = max_index < 65535u;  // 65535 is the (forbidden) restart value
@@ -242,9 +242,10 @@ GltfStrip read_gltf_strip(const std::string& path) {
     if (prim.indices < 0) throw InputError(path + ": primitive has no indices");
     const int ct = model.accessors.at(static_cast<size_t>(prim.indices)).componentType;
     s.index_component_type = ct;
-    const size_t size = ct == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ? 1 : ct == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ? 2
-                        : ct == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT                                         ? 4
-                                                                                                             : 0;
+    const size_t size = ct == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE    ? 1
+                        : ct == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ? 2
+                        : ct == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT   ? 4
+                                                                       : 0;
     if (size == 0) throw InputError(path + ": indices have an unsupported component type");
     auto [p, n] = accessor_bytes(prim.indices, TINYGLTF_TYPE_SCALAR, size);
     s.indices.resize(n);
