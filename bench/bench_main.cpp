@@ -53,11 +53,11 @@
 #include <meshoptimizer.h>
 
 #include "families.hpp"
+#include "fixtures.hpp"
 #include "read_bench.hpp"
 #include "scaling.hpp"
 #include "singlestrip/encode.hpp"
 #include "singlestrip/errors.hpp"
-#include "singlestrip/generators.hpp"
 #include "singlestrip/io.hpp"
 #include "singlestrip/mesh.hpp"
 #include "singlestrip/strip.hpp"

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <utility>
 
+#include "fixtures.hpp"
 #include "scaling.hpp"
-#include "singlestrip/generators.hpp"
 
 namespace singlestrip::bench {
 

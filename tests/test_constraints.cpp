@@ -10,9 +10,9 @@
 #include <set>
 
 #include "cgal_data.hpp"
+#include "fixtures.hpp"
 #include "singlestrip/cycles.hpp"
 #include "singlestrip/errors.hpp"
-#include "singlestrip/generators.hpp"
 #include "singlestrip/io.hpp"
 #include "singlestrip/mesh.hpp"
 #include "singlestrip/strip.hpp"

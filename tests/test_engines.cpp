@@ -23,8 +23,8 @@
 #include <utility>
 #include <vector>
 
+#include "fixtures.hpp"
 #include "singlestrip/errors.hpp"
-#include "singlestrip/generators.hpp"
 #include "singlestrip/strip.hpp"
 #include "strip_check.hpp"
 

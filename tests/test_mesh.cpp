@@ -3,8 +3,8 @@
 
 #include <random>
 
+#include "fixtures.hpp"
 #include "singlestrip/errors.hpp"
-#include "singlestrip/generators.hpp"
 #include "singlestrip/mesh.hpp"
 
 using namespace singlestrip;

@@ -7,7 +7,7 @@
 #include <random>
 #include <vector>
 
-#include "../src/path_order.hpp"
+#include "../src/algo/path_order.hpp"
 
 namespace singlestrip {
 namespace {

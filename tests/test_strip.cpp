@@ -5,9 +5,9 @@
 
 #include <random>
 
+#include "fixtures.hpp"
 #include "singlestrip/cycles.hpp"
 #include "singlestrip/errors.hpp"
-#include "singlestrip/generators.hpp"
 #include "singlestrip/mesh.hpp"
 #include "singlestrip/strip.hpp"
 #include "strip_check.hpp"

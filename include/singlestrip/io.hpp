@@ -99,6 +99,12 @@ void refuse_overwrites(const std::vector<std::pair<std::string, std::string>>& i
 void check_constraint_edges(const std::string& path, const std::vector<std::pair<uint32_t, uint32_t>>& pairs,
                             const std::vector<uint32_t>& line_of_pair, const TriangleSoup& soup);
 
+/// `s` with ASCII letters in lower case (format names and extensions are case-insensitive).
+std::string ascii_lower(std::string s);
+
+/// The extension of `path`'s file name with its dot, lower-cased (".ply"); empty when it has none.
+std::string lower_extension(const std::string& path);
+
 /// Output mesh formats, chosen by extension (glTF has its own writer, gltf.hpp).
 enum class OutputFormat { Ply, Obj, Off, Stl };
 

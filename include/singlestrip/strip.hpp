@@ -104,12 +104,7 @@ StripResult build_strip(Mesh mesh, const StripOptions& options = {});
 StripResult build_strip_growth(Mesh mesh, const StripOptions& options);
 StripResult build_strip_matching(Mesh mesh, const StripOptions& options);
 
-/// Output arrays in strip order: faces as vertex triples (orientation kept) and their parents.
-struct StripArrays {
-    std::vector<Point3> points;
-    std::vector<Triangle> faces;
-    std::vector<uint32_t> parent;
-};
+/// The output arrays (StripArrays, soup.hpp) of a strip: faces in strip order. O(V + F).
 StripArrays strip_arrays(const StripResult& result);
 
 }  // namespace singlestrip

@@ -19,18 +19,10 @@
 #include "singlestrip/errors.hpp"
 #include "singlestrip/gltf.hpp"
 #include "singlestrip/io.hpp"
+#include "singlestrip/vec3.hpp"
 
 namespace singlestrip {
 namespace {
-
-std::string lower_extension(const std::string& path) {
-    const auto slash = path.find_last_of("/\\");
-    const auto dot = path.find_last_of('.');
-    if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return {};
-    std::string ext = path.substr(dot);
-    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return ext;
-}
 
 template <class T>
 void append_bytes(std::vector<unsigned char>& buf, const T& v) {
@@ -55,15 +47,13 @@ std::vector<Point3> vertex_normals(const std::vector<Point3>& points, const std:
         const Point3& a = points[f[0]];
         const Point3& b = points[f[1]];
         const Point3& c = points[f[2]];
-        const std::array<double, 3> u{b[0] - a[0], b[1] - a[1], b[2] - a[2]};
-        const std::array<double, 3> v{c[0] - a[0], c[1] - a[1], c[2] - a[2]};
         // The unnormalised cross product is twice the area times the unit normal: area weighting.
-        const Point3 cr{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+        const Point3 cr = vec3::cross(vec3::sub(b, a), vec3::sub(c, a));
         for (uint32_t k : f)
             for (int d = 0; d < 3; ++d) n[k][d] += cr[d];
     }
     for (Point3& x : n) {
-        const double len = std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
+        const double len = vec3::norm(x);
         if (len > 0 && std::isfinite(len)) {
             for (double& c : x) c /= len;
         } else {

@@ -130,4 +130,22 @@ std::string report_json(const ReportInput& in) {
     return j.dump(2) + "\n";
 }
 
+std::string gltf_report_json(const std::string& input, const std::string& output, const std::vector<GltfPrimitiveResult>& primitives) {
+    json j = {{"input", input}, {"output", output}, {"primitives", json::array()}};
+    for (const auto& p : primitives)
+        j["primitives"].push_back({{"mesh", p.mesh},
+                                   {"primitive", p.primitive},
+                                   {"stripped", p.stripped},
+                                   {"note", p.note},
+                                   {"input_triangles", p.input_triangles},
+                                   {"output_triangles", p.output_triangles},
+                                   {"splits", p.splits},
+                                   {"strips", p.strips},
+                                   {"strip_indices", p.strip_indices},
+                                   {"welded_vertices", p.welded},
+                                   {"attributes", p.attributes},
+                                   {"repair", p.repair}});
+    return j.dump(2) + "\n";
+}
+
 }  // namespace singlestrip
