@@ -10,7 +10,6 @@
 // "-" is standard input for INPUT (with --input-format) and standard output for one of -o (with
 // --format), --indices, --report, --cycles, --cycles-obj, --path (with --path-format).
 #include <CLI/CLI.hpp>
-#include <nlohmann/json.hpp>
 
 #include <unistd.h>
 
@@ -46,7 +45,6 @@
 
 namespace ss = singlestrip;
 namespace app = singlestrip::app;
-using json = nlohmann::json;
 
 namespace {
 
@@ -90,32 +88,6 @@ CLI::Option* add_engine_option(CLI::App* app, std::function<void(ss::StripEngine
 
 std::string yes_no(bool b) {
     return b ? "yes" : "no";
-}
-
-json info_json(const std::string& input, const ss::MeshInfo& m, long long flipped) {
-    json j;
-    j["file"] = input;
-    j["vertices"] = m.vertices;
-    j["referenced_vertices"] = m.referenced_vertices;
-    j["faces"] = m.faces;
-    j["polygons"] = m.polygons;
-    j["edges"] = m.edges;
-    j["boundary_edges"] = m.boundary_edges;
-    j["non_manifold_edges"] = m.non_manifold_edges;
-    j["components"] = m.components;
-    j["component_sizes"] = m.component_sizes;
-    j["boundary_loops"] = m.boundary_loops;
-    j["euler_characteristic"] = m.euler_characteristic;
-    j["genus"] = m.genus_valid ? json(m.genus) : json(nullptr);
-    j["orientable"] = m.orientable;
-    j["oriented"] = m.oriented;
-    if (flipped >= 0) j["faces_flipped_by_orient"] = flipped;
-    j["unwelded_vertices"] = m.unwelded_vertices;
-    j["valid"] = m.valid();
-    json ps = json::array();
-    for (const auto& p : m.problems) ps.push_back({{"kind", p.kind}, {"message", p.message}});
-    j["problems"] = ps;
-    return j;
 }
 
 std::string info_text(const std::string& input, const ss::MeshInfo& m, long long flipped) {
@@ -180,9 +152,7 @@ int run_info(const std::string& input, const std::string& format, bool as_json, 
     if (orient) flipped = ss::orient_soup(soup);  // -1: not orientable, reported as a problem
     const ss::MeshInfo m = ss::mesh_info(soup);
     if (as_json) {
-        json j = info_json(input, m, orient ? flipped : -1);
-        if (repaired) j["repair"] = json::parse(ss::repair_json(*repaired));
-        std::cout << j.dump(2) << '\n';
+        std::cout << ss::info_json(input, m, orient ? flipped : -1, repaired ? &*repaired : nullptr);
     } else {
         std::cout << info_text(input, m, orient ? flipped : -1);
     }
