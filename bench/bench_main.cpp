@@ -222,13 +222,7 @@ std::string first_line(const std::string& s) {
 /// Runs the independent verifier; returns 1/0 and the first failure in `msg`.
 int verify_result(const ss::TriangleSoup& in, const ss::StripArrays& out, const std::vector<uint32_t>& indices, const ss::StripOptions& o,
                   char* msg, size_t msg_size) {
-    ss::VerifyInput vi;
-    vi.in_points = in.points;
-    vi.in_faces = in.triangles;
-    vi.out_points = out.points;
-    vi.out_faces = out.faces;
-    vi.out_parent = out.parent;
-    vi.indices = indices;
+    ss::VerifyInput vi = ss::verify_input(in, out, indices);
     vi.constraints = o.constraint_edges;
     vi.source = o.source;
     vi.target = o.target;

@@ -235,25 +235,11 @@ TriangleSoup load_real(const std::string& name) {
     return prepare_soup(read_mesh_file(path), PrepareOptions{}, path);
 }
 
-/// Suites over both engines; opts() gives default options on the engine under test.
-class EngineTest : public ::testing::TestWithParam<StripEngine> {
-protected:
-    StripOptions opts() const {
-        StripOptions o;
-        o.engine = GetParam();
-        return o;
-    }
-};
 class StripCycles : public EngineTest {};
 class StripCyclesReal : public EngineTest {};
 
-std::string engine_test_name(const ::testing::TestParamInfo<StripEngine>& info) {
-    return engine_name(info.param);
-}
-
 }  // namespace
 
-const auto kBothEngines = ::testing::Values(StripEngine::Matching, StripEngine::Growth);
 INSTANTIATE_TEST_SUITE_P(Engines, StripCycles, kBothEngines, engine_test_name);
 INSTANTIATE_TEST_SUITE_P(Engines, StripCyclesReal, kBothEngines, engine_test_name);
 

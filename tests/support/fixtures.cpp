@@ -100,6 +100,19 @@ void add_ring_cap(TriangleSoup& s, uint32_t first, uint32_t n) {
     add(first, first + 1, first + 2);
 }
 
+/// Two triangles (a, b, c), (a, c, d) per cell of a rows x cols parameter grid, where
+/// a = id(i, j), b = id(i+1, j), c = id(i+1, j+1), d = id(i, j+1); `id` wraps as the surface does.
+template <class Id>
+void add_quads(TriangleSoup& s, uint32_t rows, uint32_t cols, Id id) {
+    for (uint32_t i = 0; i < rows; ++i) {
+        for (uint32_t j = 0; j < cols; ++j) {
+            const uint32_t a = id(i, j), b = id(i + 1, j), c = id(i + 1, j + 1), d = id(i, j + 1);
+            s.triangles.push_back({a, b, c});
+            s.triangles.push_back({a, c, d});
+        }
+    }
+}
+
 uint32_t rounded(double x) {
     return static_cast<uint32_t>(std::max(1.0, std::round(x)));
 }
@@ -159,13 +172,7 @@ TriangleSoup make_annulus(uint32_t n_around, uint32_t n_radial) {
         }
     }
     // radial x angular = +z, so (inner, outer, outer next) is CCW.
-    for (uint32_t ring = 0; ring < n_radial; ++ring) {
-        for (uint32_t i = 0; i < n_around; ++i) {
-            const uint32_t a = id(ring, i), b = id(ring + 1, i), c = id(ring + 1, i + 1), d = id(ring, i + 1);
-            s.triangles.push_back({a, b, c});
-            s.triangles.push_back({a, c, d});
-        }
-    }
+    add_quads(s, n_radial, n_around, id);
     return s;
 }
 
@@ -247,13 +254,7 @@ TriangleSoup make_torus(uint32_t n_major, uint32_t n_minor) {
         }
     }
     // d/du x d/dv points outward, so (i,j), (i+1,j), (i+1,j+1) is outward.
-    for (uint32_t i = 0; i < n_major; ++i) {
-        for (uint32_t j = 0; j < n_minor; ++j) {
-            const uint32_t a = id(i, j), b = id(i + 1, j), c = id(i + 1, j + 1), d = id(i, j + 1);
-            s.triangles.push_back({a, b, c});
-            s.triangles.push_back({a, c, d});
-        }
-    }
+    add_quads(s, n_major, n_minor, id);
     return s;
 }
 

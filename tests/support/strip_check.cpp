@@ -2,6 +2,14 @@
 
 #include "singlestrip/pipeline.hpp"
 
+namespace singlestrip {
+
+std::string engine_test_name(const ::testing::TestParamInfo<StripEngine>& info) {
+    return engine_name(info.param);
+}
+
+}  // namespace singlestrip
+
 namespace singlestrip::testing {
 
 StripCheck strip_and_verify(const TriangleSoup& soup, const StripOptions& options) {
