@@ -1,5 +1,5 @@
-// Fundamental cycles (paper §4, src/cycles.cpp) against our reference tree–cotree generators
-// (Eppstein 2003, src/tree_cotree.cpp) on the same strips, for each strip engine: count, mean
+// Fundamental cycles (paper §4, src/algo/cycles.cpp) against our reference tree–cotree generators
+// (Eppstein 2003, src/algo/tree_cotree.cpp) on the same strips, for each strip engine: count, mean
 // length in faces and in geometric length (polyline through face centroids and shared-edge
 // midpoints), time. Every set of cycles is checked by the independent verifier before it is
 // reported.

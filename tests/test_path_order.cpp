@@ -1,4 +1,4 @@
-// PathOrder (src/path_order.hpp), the matching engine's sequence with reversals, against a plain
+// PathOrder (src/algo/path_order.hpp), the matching engine's sequence with reversals, against a plain
 // vector doing the same operations.
 #include <gtest/gtest.h>
 
