@@ -164,6 +164,20 @@ void set_message(T& r, const std::string& s) {
     std::snprintf(r.message, sizeof r.message, "%s", s.c_str());
 }
 
+/// Reads and prepares (orients) `path` into `soup`; an InputError is recorded in `r` (status 1)
+/// and gives false.
+template <class T>
+bool read_prepared(const std::string& path, ss::TriangleSoup& soup, T& r) {
+    try {
+        soup = ss::prepare_soup(ss::read_mesh_file(path), ss::PrepareOptions{true}, path);
+        return true;
+    } catch (const ss::InputError& e) {
+        r.status = 1;
+        set_message(r, e.what());
+        return false;
+    }
+}
+
 /// Strips joined by degenerate triangles in a GL strip. A swap inside a strip (a b a) makes ONE
 /// degenerate triangle; a join (... a b b c c d ...) makes a run of two or more, so only runs of
 /// length >= 2 count as joins.
@@ -376,13 +390,7 @@ Reference measure_reference(const Spec& spec, int mreps, double budget) {
         buf = {};
         r.t_bytes = median(tb);
         ss::TriangleSoup soup;
-        try {
-            soup = ss::prepare_soup(ss::read_mesh_file(spec.path), ss::PrepareOptions{true}, spec.path);
-        } catch (const ss::InputError& e) {
-            r.status = 1;
-            set_message(r, e.what());
-            return r;
-        }
+        if (!read_prepared(spec.path, soup, r)) return r;
         r.in_vertices = soup.points.size();
         r.in_tris = soup.triangles.size();
         count_interior_valence(soup, r.interior, r.interior_off3, r.max_valence);
@@ -492,13 +500,7 @@ ConstraintRun measure_constraints(const Spec& spec, const Settings& cfg) {
     ConstraintRun r;
     try {
         ss::TriangleSoup soup;
-        try {
-            soup = ss::prepare_soup(ss::read_mesh_file(spec.path), ss::PrepareOptions{true}, spec.path);
-        } catch (const ss::InputError& e) {
-            r.status = 1;
-            set_message(r, e.what());
-            return r;
-        }
+        if (!read_prepared(spec.path, soup, r)) return r;
         r.in_tris = soup.triangles.size();
         // Seeded by the name: the same cases on every run and for both engines.
         uint64_t seed = 1469598103934665603ull;
