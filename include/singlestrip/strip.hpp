@@ -73,8 +73,8 @@ struct StripStats {
     uint32_t absorbed = 0;                       ///< matching engine: loops taken into the path for free (end rotations)
     uint32_t parity_splits = 0;                  ///< matching engine: rounds of splits beside faces left short
     uint32_t unmatched = 0;                      ///< matching engine: faces left short by the matching (path ends)
-    /// Matching engine: its loops and paths could not be joined into one strip, so the growth
-    /// builder finished the (partly split) mesh.
+    /// Matching engine: the growth builder made the strip, because the engine's loops and paths
+    /// could not be joined into one, or because after parity splits its strip was the better one.
     bool growth_fallback = false;
 };
 

@@ -71,13 +71,31 @@ private:
     static constexpr uint32_t kFanValence = 32;  ///< fans of this many faces or more: one loop
     void match_patterned();
     bool augment_from(uint32_t u, std::vector<uint32_t>& stamp, uint32_t mark, size_t budget);
+    // Augmenting path from one short face through blossoms (matching_blossom.cpp).
+    enum class Search { Found, NoPath, Unknown };
+    Search blossom_search(uint32_t root, size_t budget);
+    [[nodiscard]] bool in_blossom_graph(uint32_t f) const;
+    [[nodiscard]] uint32_t mate_edge(uint32_t f) const;
+    uint32_t blossom_base(uint32_t f);
+    uint32_t blossom_lca(uint32_t a, uint32_t b);
+    void blossom_mark(uint32_t v, uint32_t b, uint32_t into_v);
+    void blossom_contract(uint32_t v, uint32_t to, uint32_t h);
+    void blossom_augment(uint32_t end);
+    void blossom_touch(uint32_t f);
+    // Per face, valid where bl_stamp_ == bl_search_ (reset lazily: a search costs what it touches).
+    std::vector<uint32_t> bl_stamp_, bl_seen_, bl_base_, bl_parent_;  ///< parent: half-edge into the face
+    std::vector<uint8_t> bl_label_;                                   ///< 0, odd or even in the tree
+    std::vector<uint32_t> bl_touched_, bl_queue_, bl_merge_;
+    uint32_t bl_search_ = 0, bl_mark_ = 0;
     void settle_leftovers();
+    void check_matching() const;
     void repair_short(std::vector<uint32_t>& short_faces);
     bool split_beside(uint32_t u);
     bool repair_in_balls(std::vector<uint32_t>& short_faces, size_t ball);
-    bool repair_ball(const std::vector<uint32_t>& short_faces, size_t ball);
+    bool repair_ball(const std::vector<uint32_t>& short_faces, size_t ball, std::vector<uint8_t>* whole = nullptr);
     static constexpr size_t kBallOneByOne = 8192;
     std::vector<uint32_t> ball_local_;
+    std::vector<uint8_t> ball_whole_;  ///< faces of a ball that was its whole component
     void label_structures();
     void merge_all();
     void reduce_loops();
@@ -87,6 +105,7 @@ private:
     int swap_at(uint32_t h) const;
     int swaps_around(std::initializer_list<uint32_t> faces) const;
     bool flip_alternating(uint32_t f1);
+    std::vector<uint32_t> flipped_faces_;  ///< faces whose edges a flip changed (reduce_loops())
     bool meets_first(uint32_t from, uint32_t back, uint32_t good, uint32_t bad) const;
     bool try_merge(uint32_t h, bool allow_split);
     void join(uint32_t h, uint32_t a, uint32_t b, bool cycle, bool pinned);
@@ -95,6 +114,10 @@ private:
     bool single_strip_ready();
     std::vector<uint32_t> walk() const;
     StripResult finish(std::vector<uint32_t> order);
+    StripResult finish_or_grow(std::vector<uint32_t> order);
+    StripResult grow(Mesh mesh, uint32_t splits) const;
+    void keep_better(StripResult& r, StripResult alt) const;
+    StripResult as_fallback(StripResult r) const;
     StripResult fallback();
     Mesh input_mesh() const;
 };

@@ -119,6 +119,7 @@ bool MatchingBuilder::flip_alternating(uint32_t f1) {
                 for (uint32_t i = 0; i <= 2 * depth + 1; ++i) {
                     set_pair(used_, path[i], !used_[path[i]]);
                     set_pair(matched_, path[i], !matched_[path[i]]);
+                    flipped_faces_.push_back(Mesh::face(path[i]));
                 }
                 for (uint32_t i = 1; i <= depth; ++i) uf_[find(roots[i])] = find(roots[0]);
                 found = true;
@@ -133,11 +134,21 @@ bool MatchingBuilder::flip_alternating(uint32_t f1) {
 }
 
 // Fewer loops before any split: flip alternating cycles that join loops.
+// A flip can enable another, near the faces it changed: later passes look only there (on the
+// libcgal-demo meshes, whole-mesh passes after the first never found one).
 void MatchingBuilder::reduce_loops() {
-    for (uint32_t pass = 0, flips = 1; pass < 4 && flips > 0; ++pass) {  // a flip can enable another
-        flips = 0;
-        for (uint32_t f = 0; f < mesh_.num_faces(); ++f) flips += flip_alternating(f);
-        stats_.ring_flips += flips;
+    const uint32_t nf = mesh_.num_faces();
+    std::vector<uint32_t> stamp(nf, 0), todo;
+    flipped_faces_.clear();
+    for (uint32_t f = 0; f < nf; ++f) stats_.ring_flips += flip_alternating(f);
+    for (uint32_t pass = 1; pass < 4 && !flipped_faces_.empty(); ++pass) {
+        todo.clear();
+        for (uint32_t f : flipped_faces_)
+            for (uint32_t h = 3 * f; h < 3 * f + 3; ++h)
+                for (uint32_t g : {f, mesh_.is_boundary(h) ? f : mesh_.neighbor(h)})
+                    if (stamp[g] != pass) stamp[g] = pass, todo.push_back(g);
+        flipped_faces_.clear();
+        for (uint32_t f : todo) stats_.ring_flips += flip_alternating(f);
     }
 }
 

@@ -5,10 +5,13 @@
 #include <boost/graph/max_cardinality_matching.hpp>
 
 #include <algorithm>
+#include <cstddef>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "matching_builder.hpp"
+#include "singlestrip/errors.hpp"
 
 namespace singlestrip::matching {
 
@@ -71,8 +74,12 @@ bool MatchingBuilder::repair_in_balls(std::vector<uint32_t>& short_faces, size_t
     if (ball > kBallOneByOne) {  // large balls overlap: one search over their union
         truncated = repair_ball(short_faces, ball);
     } else {
+        // A ball that was not cut off is the whole component: Edmonds left its matching maximum,
+        // so the component's other short faces need no ball of their own.
+        std::vector<uint8_t>& whole = ball_whole_;
+        whole.assign(mesh_.num_faces(), 0);
         for (uint32_t s : std::vector<uint32_t>(short_faces))
-            if (quota_[s] > 0) truncated |= repair_ball({s}, ball);
+            if (quota_[s] > 0 && !whole[s]) truncated |= repair_ball({s}, ball, &whole);
     }
     std::erase_if(short_faces, [&](uint32_t f) { return quota_[f] == 0; });
     return truncated;
@@ -80,7 +87,7 @@ bool MatchingBuilder::repair_in_balls(std::vector<uint32_t>& short_faces, size_t
 
 // Edmonds on the union of the balls around `short_faces` (repair_in_balls()); true if a ball was
 // cut off by its size.
-bool MatchingBuilder::repair_ball(const std::vector<uint32_t>& short_faces, size_t ball) {
+bool MatchingBuilder::repair_ball(const std::vector<uint32_t>& short_faces, size_t ball, std::vector<uint8_t>* whole) {
     std::vector<uint32_t>& local = ball_local_;  // kNone outside the ball, on entry and exit
     std::vector<uint32_t> faces, queue;
     bool truncated = false;
@@ -97,6 +104,8 @@ bool MatchingBuilder::repair_ball(const std::vector<uint32_t>& short_faces, size
         faces.insert(faces.end(), queue.begin(), queue.end());
         truncated |= queue.size() >= ball;
     }
+    if (whole && !truncated)
+        for (uint32_t f : faces) (*whole)[f] = 1;
     // Keep faces that take matched edges and whose partners are all inside too. A pinned face
     // takes two: it gets two copies, each linked to all its neighbours (b-matching to matching).
     auto want = [&](uint32_t f) { return std::max(0, static_cast<int>(degree(f)) - (2 - vlink_[f])); };
@@ -174,6 +183,18 @@ void MatchingBuilder::repair_short(std::vector<uint32_t>& short_faces) {
             }
         std::erase_if(short_faces, [&](uint32_t f) { return quota_[f] == 0; });
     }
+    // Edmonds from each face alone, bounded so that all of them cost O(F): a face it proves
+    // hopeless needs no ball.
+    // (An augmenting path never ends at a hopeless face: reversed, it would start there.)
+    const size_t budget = std::clamp<size_t>(16 * size_t{nf} / std::max<size_t>(1, short_faces.size()), 1024, size_t{1} << 16);
+    std::vector<uint32_t> hopeless;
+    std::erase_if(short_faces, [&](uint32_t f) {
+        if (quota_[f] == 0) return true;
+        const Search r = in_blossom_graph(f) ? blossom_search(f, budget) : Search::Unknown;
+        if (r == Search::NoPath) hopeless.push_back(f);
+        return r != Search::Unknown;
+    });
+    std::erase_if(short_faces, [&](uint32_t f) { return quota_[f] == 0; });
     // Edmonds on balls: each face's own, then one search over the union of larger balls (it
     // costs O(ball) per augmenting path).
     // Larger balls only for few faces: many faces still short are structural (no 2-factor).
@@ -189,6 +210,7 @@ void MatchingBuilder::repair_short(std::vector<uint32_t>& short_faces) {
         }
         if (!repair_in_balls(short_faces, ball)) break;
     }
+    short_faces.insert(short_faces.end(), hopeless.begin(), hopeless.end());
 }
 
 // Splits an edge of short face u, towards a face with three passable edges if it can;
@@ -237,6 +259,7 @@ void MatchingBuilder::settle_leftovers() {
         stats_.parity_splits += 1;
         if (short_faces.size() >= before) break;
     }
+    if (opt_.validate_each_split) check_matching();
     const uint32_t nf = mesh_.num_faces();
     for (uint32_t h = 0; h < 3 * nf; ++h) used_[h] = passable(h) && !matched_[h];
     for (uint32_t f : short_faces)
@@ -247,6 +270,24 @@ void MatchingBuilder::settle_leftovers() {
             }
     stats_.unmatched = static_cast<uint32_t>(short_faces.size());
     if (short_faces.empty()) pre_merge_.reset();  // loops only: no fallback ahead
+}
+
+// The matching's invariant: a face has exactly its wanted matched edges less its quota, all
+// passable and symmetric across twins.
+void MatchingBuilder::check_matching() const {
+    for (uint32_t f = 0; f < mesh_.num_faces(); ++f) {
+        int have = 0;
+        for (uint32_t h = 3 * f; h < 3 * f + 3; ++h) {
+            if (!matched_[h]) continue;
+            if (!passable(h) || !matched_[mesh_.twin(h)])
+                throw InternalError("matching engine: face " + std::to_string(f) + " is matched across a closed or one-sided edge");
+            ++have;
+        }
+        const int want = std::max(0, static_cast<int>(degree(f)) - (2 - vlink_[f]));
+        if (have + quota_[f] != want)
+            throw InternalError("matching engine: face " + std::to_string(f) + " has " + std::to_string(have) +
+                                " matched edges and quota " + std::to_string(quota_[f]) + " but wants " + std::to_string(want));
+    }
 }
 
 }  // namespace singlestrip::matching
