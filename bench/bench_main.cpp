@@ -53,11 +53,11 @@
 #include <meshoptimizer.h>
 
 #include "families.hpp"
+#include "fixtures.hpp"
 #include "read_bench.hpp"
 #include "scaling.hpp"
 #include "singlestrip/encode.hpp"
 #include "singlestrip/errors.hpp"
-#include "singlestrip/generators.hpp"
 #include "singlestrip/io.hpp"
 #include "singlestrip/mesh.hpp"
 #include "singlestrip/strip.hpp"
@@ -164,6 +164,20 @@ void set_message(T& r, const std::string& s) {
     std::snprintf(r.message, sizeof r.message, "%s", s.c_str());
 }
 
+/// Reads and prepares (orients) `path` into `soup`; an InputError is recorded in `r` (status 1)
+/// and gives false.
+template <class T>
+bool read_prepared(const std::string& path, ss::TriangleSoup& soup, T& r) {
+    try {
+        soup = ss::prepare_soup(ss::read_mesh_file(path), ss::PrepareOptions{true}, path);
+        return true;
+    } catch (const ss::InputError& e) {
+        r.status = 1;
+        set_message(r, e.what());
+        return false;
+    }
+}
+
 /// Strips joined by degenerate triangles in a GL strip. A swap inside a strip (a b a) makes ONE
 /// degenerate triangle; a join (... a b b c c d ...) makes a run of two or more, so only runs of
 /// length >= 2 count as joins.
@@ -222,13 +236,7 @@ std::string first_line(const std::string& s) {
 /// Runs the independent verifier; returns 1/0 and the first failure in `msg`.
 int verify_result(const ss::TriangleSoup& in, const ss::StripArrays& out, const std::vector<uint32_t>& indices, const ss::StripOptions& o,
                   char* msg, size_t msg_size) {
-    ss::VerifyInput vi;
-    vi.in_points = in.points;
-    vi.in_faces = in.triangles;
-    vi.out_points = out.points;
-    vi.out_faces = out.faces;
-    vi.out_parent = out.parent;
-    vi.indices = indices;
+    ss::VerifyInput vi = ss::verify_input(in, out, indices);
     vi.constraints = o.constraint_edges;
     vi.source = ss::index_of(o.source);
     vi.target = ss::index_of(o.target);
@@ -382,13 +390,7 @@ Reference measure_reference(const Spec& spec, int mreps, double budget) {
         buf = {};
         r.t_bytes = median(tb);
         ss::TriangleSoup soup;
-        try {
-            soup = ss::prepare_soup(ss::read_mesh_file(spec.path), ss::PrepareOptions{true}, spec.path);
-        } catch (const ss::InputError& e) {
-            r.status = 1;
-            set_message(r, e.what());
-            return r;
-        }
+        if (!read_prepared(spec.path, soup, r)) return r;
         r.in_vertices = soup.points.size();
         r.in_tris = soup.triangles.size();
         count_interior_valence(soup, r.interior, r.interior_off3, r.max_valence);
@@ -498,13 +500,7 @@ ConstraintRun measure_constraints(const Spec& spec, const Settings& cfg) {
     ConstraintRun r;
     try {
         ss::TriangleSoup soup;
-        try {
-            soup = ss::prepare_soup(ss::read_mesh_file(spec.path), ss::PrepareOptions{true}, spec.path);
-        } catch (const ss::InputError& e) {
-            r.status = 1;
-            set_message(r, e.what());
-            return r;
-        }
+        if (!read_prepared(spec.path, soup, r)) return r;
         r.in_tris = soup.triangles.size();
         // Seeded by the name: the same cases on every run and for both engines.
         uint64_t seed = 1469598103934665603ull;

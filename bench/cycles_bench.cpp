@@ -1,5 +1,5 @@
-// Fundamental cycles (paper §4, src/cycles.cpp) against our reference tree–cotree generators
-// (Eppstein 2003, src/tree_cotree.cpp) on the same strips, for each strip engine: count, mean
+// Fundamental cycles (paper §4, src/algo/cycles.cpp) against our reference tree–cotree generators
+// (Eppstein 2003, src/algo/tree_cotree.cpp) on the same strips, for each strip engine: count, mean
 // length in faces and in geometric length (polyline through face centroids and shared-edge
 // midpoints), time. Every set of cycles is checked by the independent verifier before it is
 // reported.
@@ -40,12 +40,8 @@ Summary summarize(const TriangleSoup& soup, const StripArrays& a, const Cycles& 
         s.mean_faces /= static_cast<double>(s.count);
         s.mean_length /= static_cast<double>(s.count);
     }
-    VerifyInput vi;
-    vi.in_points = soup.points;
-    vi.in_faces = soup.triangles;
-    vi.out_points = a.points;
-    vi.out_faces = a.faces;
-    vi.out_parent = a.parent;
+    VerifyInput vi = verify_input(soup, a, {});
+    vi.indices.reset();  // the cycles are checked, not an index sequence
     vi.cycles = c.cycles;
     s.verified = verify(vi).ok();
     return s;

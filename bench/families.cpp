@@ -5,8 +5,8 @@
 #include <utility>
 
 #include "many_centres.hpp"
+#include "fixtures.hpp"
 #include "scaling.hpp"
-#include "singlestrip/generators.hpp"
 
 namespace singlestrip::bench {
 
@@ -32,7 +32,7 @@ std::vector<Family> scaling_families() {
 }
 
 std::vector<Family> awkward_families() {
-    // make_awkward picks each family's parameters for a triangle count (src/generators.cpp).
+    // make_awkward picks each family's parameters for a triangle count (tests/support/fixtures.cpp).
     std::vector<Family> out;
     for (const AwkwardFamily fam : kAwkwardFamilies) {
         Family f{awkward_family_name(fam), {}, false, fam == AwkwardFamily::SlitWalls || fam == AwkwardFamily::SerpentineWalls};

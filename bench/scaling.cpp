@@ -17,11 +17,11 @@ namespace singlestrip::bench {
 TriangleSoup make_geodesic_sphere(uint32_t n) {
     if (n == 0) throw RequestError("geodesic sphere needs n >= 1");
     const double t = (1.0 + std::sqrt(5.0)) / 2.0;
-    const std::vector<Point3> corner = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
-                                        {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
-    const std::vector<Triangle> ico = {{0, 11, 5}, {0, 5, 1}, {0, 1, 7}, {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
-                                       {11, 10, 2}, {10, 7, 6}, {7, 1, 8}, {3, 9, 4}, {3, 4, 2}, {3, 2, 6}, {3, 6, 8},
-                                       {3, 8, 9}, {4, 9, 5}, {2, 4, 11}, {6, 2, 10}, {8, 6, 7}, {9, 8, 1}};
+    const std::vector<Point3> corner = {{-1, t, 0},  {1, t, 0},  {-1, -t, 0}, {1, -t, 0}, {0, -1, t},  {0, 1, t},
+                                        {0, -1, -t}, {0, 1, -t}, {t, 0, -1},  {t, 0, 1},  {-t, 0, -1}, {-t, 0, 1}};
+    const std::vector<Triangle> ico = {{0, 11, 5},  {0, 5, 1},  {0, 1, 7},  {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+                                       {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
+                                       {3, 8, 9},   {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
     TriangleSoup s;
     s.points = corner;
     s.points.reserve(size_t{10} * n * n + 2);
@@ -52,12 +52,18 @@ TriangleSoup make_geodesic_sphere(uint32_t n) {
         for (uint32_t j = 0; j <= n; ++j) {
             for (uint32_t i = 0; i + j <= n; ++i) {
                 uint32_t v;
-                if (i == 0 && j == 0) v = A;
-                else if (i == n) v = B;
-                else if (j == n) v = C;
-                else if (j == 0) v = on_edge(A, B, i);
-                else if (i == 0) v = on_edge(A, C, j);
-                else if (i + j == n) v = on_edge(B, C, j);
+                if (i == 0 && j == 0)
+                    v = A;
+                else if (i == n)
+                    v = B;
+                else if (j == n)
+                    v = C;
+                else if (j == 0)
+                    v = on_edge(A, B, i);
+                else if (i == 0)
+                    v = on_edge(A, C, j);
+                else if (i + j == n)
+                    v = on_edge(B, C, j);
                 else {
                     v = static_cast<uint32_t>(s.points.size());
                     const Point3 p = lerp(corner[A], corner[B], double(i) / n);
@@ -70,8 +76,7 @@ TriangleSoup make_geodesic_sphere(uint32_t n) {
         for (uint32_t j = 0; j < n; ++j) {
             for (uint32_t i = 0; i + j < n; ++i) {
                 s.triangles.push_back({local[idx(i, j)], local[idx(i + 1, j)], local[idx(i, j + 1)]});
-                if (i + j + 1 < n)
-                    s.triangles.push_back({local[idx(i + 1, j)], local[idx(i + 1, j + 1)], local[idx(i, j + 1)]});
+                if (i + j + 1 < n) s.triangles.push_back({local[idx(i + 1, j)], local[idx(i + 1, j + 1)], local[idx(i, j + 1)]});
             }
         }
     }
@@ -88,11 +93,9 @@ void write_binary_ply(const std::string& path, const TriangleSoup& soup) {
     };
     std::unique_ptr<std::FILE, Closer> f(std::fopen(path.c_str(), "wb"));
     if (!f) throw OutputError(path + ": cannot open for writing");
-    const std::string header = "ply\nformat binary_little_endian 1.0\nelement vertex " +
-                               std::to_string(soup.points.size()) +
+    const std::string header = "ply\nformat binary_little_endian 1.0\nelement vertex " + std::to_string(soup.points.size()) +
                                "\nproperty float x\nproperty float y\nproperty float z\nelement face " +
-                               std::to_string(soup.triangles.size()) +
-                               "\nproperty list uchar int vertex_indices\nend_header\n";
+                               std::to_string(soup.triangles.size()) + "\nproperty list uchar int vertex_indices\nend_header\n";
     bool ok = std::fwrite(header.data(), 1, header.size(), f.get()) == header.size();
     // Buffered in blocks: one fwrite per element would dominate the time at 10M faces.
     std::vector<char> buf;

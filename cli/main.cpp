@@ -2,7 +2,7 @@
 // is its own program (singlestrip-render, render/), exec'd here so that the other commands never
 // load OSMesa and LLVM.
 //
-// Exit codes (errors.hpp): 0 ok; 2 bad command line; 3 bad input (file or mesh; also `info` on
+// Exit codes (src/app/exit_codes.hpp): 0 ok; 2 bad command line; 3 bad input (file or mesh; also `info` on
 // a mesh that is not valid for stripping); 4 request cannot be met (including outputs that would
 // overwrite an input or each other); 5 verification failed; 6 internal error; 7 output could not
 // be written. Errors print "singlestrip: error: <message>".
@@ -10,7 +10,6 @@
 // "-" is standard input for INPUT (with --input-format) and standard output for one of -o (with
 // --format), --indices, --report, --cycles, --cycles-obj, --path (with --path-format).
 #include <CLI/CLI.hpp>
-#include <nlohmann/json.hpp>
 
 #include <unistd.h>
 
@@ -28,10 +27,13 @@
 #include <string>
 #include <vector>
 
-#include "singlestrip/batch.hpp"
+#include "app/batch.hpp"
+#include "app/exit_codes.hpp"
+#include "app/progress.hpp"
 #include "singlestrip/cycles.hpp"
 #include "singlestrip/errors.hpp"
 #include "singlestrip/gltf.hpp"
+#include "singlestrip/gltf_scene.hpp"
 #include "singlestrip/io.hpp"
 #include "singlestrip/pipeline.hpp"
 #include "singlestrip/repair.hpp"
@@ -42,22 +44,14 @@
 #include "singlestrip/verify.hpp"
 
 namespace ss = singlestrip;
-using json = nlohmann::json;
+namespace app = singlestrip::app;
 
 namespace {
 
-class Stopwatch {
-public:
-    double lap() {
-        const auto now = std::chrono::steady_clock::now();
-        const double s = std::chrono::duration<double>(now - start_).count();
-        start_ = now;
-        return s;
-    }
-
-private:
-    std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
-};
+/// Seconds since `start`.
+double seconds_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
 
 /// INPUT "-" is standard input, whose format nothing tells.
 std::string input_path(const std::string& input, const std::string& format) {
@@ -67,7 +61,7 @@ std::string input_path(const std::string& input, const std::string& format) {
 }
 
 /// Reads INPUT: a mesh file, "-" (standard input), or `builtin:genus2` (the demo model of
-/// generators.hpp). `format` is `--input-format`: INPUT's format when its name does not tell.
+/// models.hpp). `format` is `--input-format`: INPUT's format when its name does not tell.
 ss::TriangleSoup load_input(const std::string& input, const std::string& format) {
     ss::ReadOptions read;
     read.format = format;
@@ -100,32 +94,6 @@ CLI::Option* add_engine_option(CLI::App* app, std::function<void(ss::StripEngine
 
 std::string yes_no(bool b) {
     return b ? "yes" : "no";
-}
-
-json info_json(const std::string& input, const ss::MeshInfo& m, long long flipped) {
-    json j;
-    j["file"] = input;
-    j["vertices"] = m.vertices;
-    j["referenced_vertices"] = m.referenced_vertices;
-    j["faces"] = m.faces;
-    j["polygons"] = m.polygons;
-    j["edges"] = m.edges;
-    j["boundary_edges"] = m.boundary_edges;
-    j["non_manifold_edges"] = m.non_manifold_edges;
-    j["components"] = m.components;
-    j["component_sizes"] = m.component_sizes;
-    j["boundary_loops"] = m.boundary_loops;
-    j["euler_characteristic"] = m.euler_characteristic;
-    j["genus"] = m.genus_valid ? json(m.genus) : json(nullptr);
-    j["orientable"] = m.orientable;
-    j["oriented"] = m.oriented;
-    if (flipped >= 0) j["faces_flipped_by_orient"] = flipped;
-    j["unwelded_vertices"] = m.unwelded_vertices;
-    j["valid"] = m.valid();
-    json ps = json::array();
-    for (const auto& p : m.problems) ps.push_back({{"kind", p.kind}, {"message", p.message}});
-    j["problems"] = ps;
-    return j;
 }
 
 std::string info_text(const std::string& input, const ss::MeshInfo& m, long long flipped) {
@@ -190,13 +158,11 @@ int run_info(const std::string& input, const std::string& format, bool as_json, 
     if (orient) flipped = ss::orient_soup(soup);  // -1: not orientable, reported as a problem
     const ss::MeshInfo m = ss::mesh_info(soup);
     if (as_json) {
-        json j = info_json(input, m, orient ? flipped : -1);
-        if (repaired) j["repair"] = json::parse(ss::repair_json(*repaired));
-        std::cout << j.dump(2) << '\n';
+        std::cout << ss::info_json(input, m, orient ? flipped : -1, repaired ? &*repaired : nullptr);
     } else {
         std::cout << info_text(input, m, orient ? flipped : -1);
     }
-    return m.valid() ? ss::kExitOk : ss::kExitBadInput;
+    return m.valid() ? app::kExitOk : app::kExitBadInput;
 }
 
 struct StripArgs {
@@ -286,7 +252,7 @@ void write_one(OutputSet& outputs, const std::string& path, const std::string& e
 
 /// Writes OUT and the optional files; returns the seconds spent.
 double write_outputs(const StripArgs& a, const ss::PipelineResult& r, OutputSet& outputs) {
-    Stopwatch clock;
+    const auto start = std::chrono::steady_clock::now();
     write_one(outputs, a.output, a.format, [&](const std::string& p) {
         if (ss::is_gltf_path(p))
             ss::write_gltf_strip(p, r.arrays, ss::degenerate_joined_indices(r));
@@ -296,13 +262,13 @@ double write_outputs(const StripArgs& a, const ss::PipelineResult& r, OutputSet&
     if (a.indices) write_one(outputs, *a.indices, "txt", [&](const std::string& p) { ss::write_indices(p, r.indices); });
     if (r.cycles && a.cycles) write_one(outputs, *a.cycles, "json", [&](const std::string& p) { ss::write_cycles_json(p, *r.cycles); });
     if (r.cycles && a.cycles_obj)
-        write_one(outputs, *a.cycles_obj, "obj", [&](const std::string& p) { ss::write_cycles_obj(p, r.arrays, *r.cycles); });
+        write_one(outputs, *a.cycles_obj, "obj", [&](const std::string& p) { ss::write_cycles_obj(p, ss::cycle_polylines(r.arrays, *r.cycles)); });
     if (a.path) {
         const ss::Route route = ss::strip_route(r.arrays);
         write_one(outputs, *a.path, a.path_format.empty() ? "csv" : a.path_format,
                   [&](const std::string& p) { ss::write_route(p, route); });
     }
-    return clock.lap();
+    return seconds_since(start);
 }
 
 /// Checks the output names before any work: known extensions (or formats for "-"), and no
@@ -353,7 +319,6 @@ int run_strip_gltf(const StripArgs& a) {
                                "--indices, --cycles, --cycles-obj, --path, --constraints, --source, --target and --seed-face need "
                                "a .ply/.obj/.off output (all triangle primitives as one mesh)");
     const auto prims = ss::strip_gltf_file(a.input, a.output, pipeline_options(a));
-    json rep = {{"input", a.input}, {"output", a.output}, {"primitives", json::array()}};
     for (const auto& p : prims) {
         std::cerr << "singlestrip: " << a.input << ": mesh " << p.mesh << " primitive " << p.primitive << ": ";
         if (!p.stripped) {
@@ -364,30 +329,18 @@ int run_strip_gltf(const StripArgs& a) {
             if (!p.repair.empty()) std::cerr << "; repair: " << p.repair;
             std::cerr << '\n';
         }
-        rep["primitives"].push_back({{"mesh", p.mesh},
-                                     {"primitive", p.primitive},
-                                     {"stripped", p.stripped},
-                                     {"note", p.note},
-                                     {"input_triangles", p.input_triangles},
-                                     {"output_triangles", p.output_triangles},
-                                     {"splits", p.splits},
-                                     {"strips", p.strips},
-                                     {"strip_indices", p.strip_indices},
-                                     {"welded_vertices", p.welded},
-                                     {"attributes", p.attributes},
-                                     {"repair", p.repair}});
     }
-    if (a.report) ss::write_text_atomic(*a.report, rep.dump(2) + "\n");
-    return ss::kExitOk;
+    if (a.report) ss::write_text_atomic(*a.report, ss::gltf_report_json(a.input, a.output, prims));
+    return app::kExitOk;
 }
 
 int run_strip(const StripArgs& a) {
     if (ss::is_gltf_path(a.input) && ss::is_gltf_path(a.output) && a.input_format.empty()) return run_strip_gltf(a);
     // Unknown extension, overwriting: RequestError before any work.
     check_strip_outputs(a);
-    Stopwatch clock;
+    const auto start = std::chrono::steady_clock::now();
     ss::TriangleSoup soup = load_input(a.input, a.input_format);
-    const double t_read = clock.lap();
+    const double t_read = seconds_since(start);
     ss::PipelineResult r = ss::stripify(std::move(soup), pipeline_options(a));
     r.seconds.read = t_read;
 
@@ -404,7 +357,7 @@ int run_strip(const StripArgs& a) {
     }
     outputs.commit();
     print_summary(a.input, r);
-    return ss::kExitOk;
+    return app::kExitOk;
 }
 
 struct VerifyArgs {
@@ -439,7 +392,7 @@ int run_verify(const VerifyArgs& a) {
                                                                : ss::verify_files(input_path(a.input, a.input_format), a.output, o);
     std::cout << rep.to_string();
     if (!rep.to_string().empty() && rep.to_string().back() != '\n') std::cout << '\n';
-    return rep.ok() ? ss::kExitOk : ss::kExitVerifyFailed;
+    return rep.ok() ? app::kExitOk : app::kExitVerifyFailed;
 }
 
 /// singlestrip-render next to this executable (build tree, install prefix), else empty (then
@@ -475,7 +428,7 @@ int exec_render(int argc, char** argv) {
         execvp(name.c_str(), args.data());
     std::cerr << "singlestrip: error: `render` is not available: singlestrip-render was not found next to this program or on PATH ("
               << std::strerror(errno) << "); it is built when OSMesa and libpng are installed (libosmesa6-dev, libpng-dev)\n";
-    return ss::kExitBadRequest;
+    return app::kExitBadRequest;
 }
 
 constexpr const char* kCommands[] = {"info", "strip", "verify", "render"};
@@ -484,14 +437,14 @@ constexpr const char* kCommands[] = {"info", "strip", "verify", "render"};
 std::optional<int> check_command(int argc, char** argv) {
     if (argc < 2) {
         std::cerr << "singlestrip: error: a command is required: info, strip, verify or render (see singlestrip --help)\n";
-        return ss::kExitUsage;
+        return app::kExitUsage;
     }
     const std::string first = argv[1];
     if (first.empty() || first[0] == '-') return std::nullopt;  // --help, --version, or CLI11's own message
     for (const char* c : kCommands)
         if (first == c) return std::nullopt;
     std::cerr << "singlestrip: error: unknown command '" << first << "' (commands: info, strip, verify, render; see singlestrip --help)\n";
-    return ss::kExitUsage;
+    return app::kExitUsage;
 }
 
 const char* const kInputFormatHelp = "Format of INPUT (obj, off, ply, stl) when its name does not tell: a pipe, or - (standard input)";
@@ -589,27 +542,21 @@ int run_batch_mode(const StripArgs& sa) {
         std::cerr << "singlestrip: error: --out-dir (batch mode) cannot be combined with -o, --report, --indices, --cycles, "
                      "--cycles-obj, --path, --constraints, --source or --target (they are per file; use --with-indices, "
                      "--with-cycles, --with-path)\n";
-        return ss::kExitUsage;
+        return app::kExitUsage;
     }
     for (const auto& in : sa.inputs)
         if (in == "-") throw ss::RequestError("batch mode reads files: - (standard input) is for a single INPUT");
-    ss::BatchOptions b;
+    app::BatchOptions b;
     b.out_dir = *sa.out_dir;
     b.format = sa.format;
     b.input_format = sa.input_format;
     b.write_indices = sa.with_indices;
-    b.cycles = sa.with_cycles;
     b.write_path = sa.with_path;
-    b.greedy = !sa.no_greedy;
-    b.engine = sa.engine;
-    b.orient = sa.orient;
-    b.weld = sa.fix.weld;
-    b.repair = sa.fix.repair;
-    b.join = sa.join;
-    b.restart_index = sa.restart_index;
-    b.seed_face = as_id<ss::FaceId>(sa.seed_face);
     b.threads = sa.jobs;
-    return ss::run_batch(sa.inputs, b, std::cout);
+    b.pipeline = pipeline_options(sa);
+    b.pipeline.cycles = sa.with_cycles;
+    const app::ProgressBar bar;
+    return app::run_batch(sa.inputs, b, std::cout, bar.callback());
 }
 
 }  // namespace
@@ -618,59 +565,50 @@ int main(int argc, char** argv) {
     if (argc >= 2 && std::string(argv[1]) == "render") return exec_render(argc, argv);
     if (auto code = check_command(argc, argv)) return *code;
 
-    CLI::App app{"singlestrip: one triangle strip for an oriented 2-manifold triangle mesh"};
-    app.require_subcommand(1);
-    app.set_version_flag("--version", "singlestrip 0.1.0");
-    app.footer(std::string(kInputFooter) + "\nsinglestrip COMMAND --help describes each command.\n" + kExitFooter);
+    CLI::App cli{"singlestrip: one triangle strip for an oriented 2-manifold triangle mesh"};
+    cli.require_subcommand(1);
+    cli.set_version_flag("--version", "singlestrip 0.1.0");
+    cli.footer(std::string(kInputFooter) + "\nsinglestrip COMMAND --help describes each command.\n" + kExitFooter);
 
     std::string info_input, info_format;
     bool info_json_flag = false, info_orient = false;
     RepairArgs info_fix;
-    auto* info = add_info(app, info_input, info_format, info_json_flag, info_orient, info_fix);
+    auto* info = add_info(cli, info_input, info_format, info_json_flag, info_orient, info_fix);
     StripArgs sa;
-    auto* strip = add_strip(app, sa);
+    auto* strip = add_strip(cli, sa);
     VerifyArgs va;
-    auto* verify = add_verify(app, va);
+    auto* verify = add_verify(cli, va);
     // Listed for --help only: `render` is exec'd above, before parsing.
     if (render_available())
-        app.add_subcommand("render", "Draw a strip result to a PNG (offscreen OpenGL; see singlestrip render --help)")
+        cli.add_subcommand("render", "Draw a strip result to a PNG (offscreen OpenGL; see singlestrip render --help)")
             ->allow_extras()
             ->prefix_command();
 
     try {
-        app.parse(argc, argv);
+        cli.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
-        return app.exit(e);
+        return cli.exit(e);
     } catch (const CLI::CallForAllHelp& e) {
-        return app.exit(e);
+        return cli.exit(e);
     } catch (const CLI::CallForVersion& e) {
-        return app.exit(e);
+        return cli.exit(e);
     } catch (const CLI::ParseError& e) {
-        app.exit(e);
-        return ss::kExitUsage;
+        cli.exit(e);
+        return app::kExitUsage;
     }
 
-    try {
+    return app::run_reporting_errors([&] {
         if (info->parsed()) return run_info(info_input, info_format, info_json_flag, info_orient, info_fix);
         if (strip->parsed()) {
             if (sa.out_dir) return run_batch_mode(sa);
             if (sa.inputs.size() != 1 || sa.output.empty()) {
                 std::cerr << "singlestrip: error: strip needs exactly one INPUT and -o OUT (or several INPUTs with --out-dir DIR)\n";
-                return ss::kExitUsage;
+                return int{app::kExitUsage};
             }
             sa.input = sa.inputs.front();
             return run_strip(sa);
         }
         if (verify->parsed()) return run_verify(va);
-        return ss::kExitUsage;
-    } catch (const ss::Error& e) {
-        std::cerr << "singlestrip: error: " << e.what() << '\n';
-        return e.exit_code();
-    } catch (const std::bad_alloc&) {
-        std::cerr << "singlestrip: error: out of memory\n";
-        return ss::kExitInternal;
-    } catch (const std::exception& e) {
-        std::cerr << "singlestrip: error: internal: " << e.what() << '\n';
-        return ss::kExitInternal;
-    }
+        return int{app::kExitUsage};
+    });
 }

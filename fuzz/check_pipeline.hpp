@@ -80,19 +80,13 @@ inline std::string check_counts(const PipelineResult& r) {
 /// verify() on the result; with cycles, also on the tree-cotree cycles of the same strip.
 inline std::string check_result(const PipelineResult& r, const Request& req, const char*& where) {
     where = "verify";
-    VerifyInput vi;
-    vi.in_points = r.input.points;
-    vi.in_faces = r.input.triangles;
-    vi.out_points = r.arrays.points;
-    vi.out_faces = r.arrays.faces;
-    vi.out_parent = r.arrays.parent;
+    VerifyInput vi = verify_input(r.input, r.arrays, r.indices);
     if (!r.face_origin.empty()) {  // parents name input faces; verify against the repaired soup
         std::vector<uint32_t> of_input(r.face_origin.empty() ? 0 : *std::max_element(r.face_origin.begin(), r.face_origin.end()) + 1,
                                        0xffffffffu);
         for (uint32_t t = 0; t < r.face_origin.size(); ++t) of_input[r.face_origin[t]] = t;
         for (uint32_t& p : vi.out_parent) p = p < of_input.size() ? of_input[p] : 0xffffffffu - 1;
     }
-    vi.indices = r.indices;
     vi.constraints = req.strip.constraint_edges;
     vi.source = index_of(req.strip.source);
     vi.target = index_of(req.strip.target);

@@ -1,5 +1,5 @@
 // singlestrip fuzzing — a small oriented manifold (or a deliberately broken soup) decoded from
-// fuzz bytes: a generator from generators.hpp, random edge flips, holes, jittered geometry,
+// fuzz bytes: a generator from tests/support/fixtures.hpp, random edge flips, holes, jittered geometry,
 // face shuffles and flips; plus strip options (seed, constraints, source/target, engine).
 #pragma once
 
@@ -12,22 +12,16 @@
 #include <vector>
 
 #include "check_pipeline.hpp"
+#include "fixtures.hpp"
 #include "singlestrip/errors.hpp"
-#include "singlestrip/generators.hpp"
 #include "singlestrip/soup.hpp"
 #include "singlestrip/strip.hpp"
 
 namespace singlestrip::fuzzcheck {
 
-/// Deterministic 64-bit mixer (splitmix64) for geometry jitter.
-inline uint64_t mix(uint64_t x) {
-    x += 0x9e3779b97f4a7c15ull;
-    x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
-    x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
-    return x ^ (x >> 31);
-}
+/// A deterministic number in [0, 1) for geometry jitter.
 inline double unit(uint64_t x) {
-    return static_cast<double>(mix(x) >> 11) * 0x1.0p-53;
+    return static_cast<double>(splitmix64(x) >> 11) * 0x1.0p-53;
 }
 
 /// Moves every vertex by up to +-amount per axis so that no face is degenerate (generators'
@@ -93,7 +87,7 @@ inline TriangleSoup decode_soup(FuzzedDataProvider& in) {
         }
     }
     if (s.triangles.empty()) return s;
-    // Topology-preserving perturbations (generators.hpp); they need an oriented manifold.
+    // Topology-preserving perturbations (fixtures.hpp); they need an oriented manifold.
     if (kind != 11) {
         if (const size_t flips = in.ConsumeIntegralInRange<size_t>(0, 30)) random_edge_flips(s, flips, in.ConsumeIntegral<uint64_t>());
         if (const size_t holes = in.ConsumeIntegralInRange<size_t>(0, 3)) {

@@ -19,8 +19,14 @@ inline std::string write_temp(const uint8_t* data, size_t size, const std::strin
     }();
     std::string path = dir + "/singlestrip_fuzz_" + std::to_string(getpid()) + ext;
     FILE* f = std::fopen(path.c_str(), "wb");
-    if (!f) { std::perror(path.c_str()); std::abort(); }
-    if (size && std::fwrite(data, 1, size, f) != size) { std::perror(path.c_str()); std::abort(); }
+    if (!f) {
+        std::perror(path.c_str());
+        std::abort();
+    }
+    if (size && std::fwrite(data, 1, size, f) != size) {
+        std::perror(path.c_str());
+        std::abort();
+    }
     std::fclose(f);
     return path;
 }

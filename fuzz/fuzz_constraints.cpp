@@ -9,9 +9,9 @@
 
 #include "check_pipeline.hpp"
 #include "decode_mesh.hpp"
+#include "fixtures.hpp"
 #include "fuzz_common.hpp"
 #include "singlestrip/errors.hpp"
-#include "singlestrip/generators.hpp"
 #include "singlestrip/io.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

@@ -26,10 +26,16 @@ constexpr Format kFormat = FUZZ_FORMAT;
 
 const char* extension() {
     switch (kFormat) {
-        case kObj: return ".obj";
-        case kOff: return ".off";
-        case kPlyAscii: case kPlyBinary: return ".ply";
-        case kStlAscii: case kStlBinary: return ".stl";
+        case kObj:
+            return ".obj";
+        case kOff:
+            return ".off";
+        case kPlyAscii:
+        case kPlyBinary:
+            return ".ply";
+        case kStlAscii:
+        case kStlBinary:
+            return ".stl";
     }
     return ".bin";
 }
@@ -37,15 +43,18 @@ const char* extension() {
 /// Whether the input belongs to this target's variant.
 bool wanted(std::string_view s) {
     switch (kFormat) {
-        case kPlyAscii: return s.substr(0, 512).find("format binary") == std::string_view::npos;
-        case kPlyBinary: return s.substr(0, 512).find("format binary") != std::string_view::npos;
+        case kPlyAscii:
+            return s.substr(0, 512).find("format binary") == std::string_view::npos;
+        case kPlyBinary:
+            return s.substr(0, 512).find("format binary") != std::string_view::npos;
         case kStlAscii:
         case kStlBinary: {
             const size_t first = s.find_first_not_of(" \t\r\n");
             const bool solid = first != std::string_view::npos && s.substr(first, 5) == "solid";
             return kFormat == kStlAscii ? solid : !solid;
         }
-        default: return true;
+        default:
+            return true;
     }
 }
 

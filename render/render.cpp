@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "app/exit_codes.hpp"
 #include "singlestrip/cycles.hpp"
 #include "singlestrip/encode.hpp"
 #include "singlestrip/errors.hpp"
@@ -22,26 +23,17 @@
 #include "singlestrip/pipeline.hpp"
 #include "singlestrip/route.hpp"
 #include "singlestrip/strip.hpp"
+#include "singlestrip/vec3.hpp"
 #include "singlestrip/verify.hpp"
 
 namespace singlestrip::render {
 namespace {
 
-using Vec = std::array<double, 3>;
-
-Vec sub(const Vec& a, const Vec& b) {
-    return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-}
-Vec cross(const Vec& a, const Vec& b) {
-    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-double dot(const Vec& a, const Vec& b) {
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-Vec normalized(const Vec& a) {
-    const double l = std::sqrt(dot(a, a));
-    return l > 0 ? Vec{a[0] / l, a[1] / l, a[2] / l} : Vec{0, 0, 0};
-}
+using Vec = Point3;
+using vec3::cross;
+using vec3::dot;
+using vec3::normalized;
+using vec3::sub;
 
 /// An OSMesa context with its own RGBA colour buffer, current for its lifetime.
 class Context {
@@ -159,11 +151,6 @@ double band_position(double t, int bands) {
     if (bands <= 1 || t >= 1.0) return t;
     const double x = t * bands;
     return x - std::floor(x);
-}
-
-std::string lower(std::string s) {
-    for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return s;
 }
 
 void check_indices(const std::vector<Point3>& points, const std::vector<uint32_t>& indices) {
@@ -470,14 +457,14 @@ View auto_view(const std::vector<Point3>& points) {
 }
 
 int run_render_command(const RenderArgs& a) {
-    const std::string out = lower(a.output);
+    const std::string out = ascii_lower(a.output);
     if (out.size() < 4 || out.substr(out.size() - 4) != ".png") throw RequestError(a.output + ": the picture must be a .png file");
     if (a.engine && a.cycles) throw RequestError("--cycles names faces of a result file; with --engine use --with-cycles");
     if (!a.engine && a.with_cycles) throw RequestError("--with-cycles needs --engine (the input is then stripped first)");
     const Drawable d = a.engine ? strip_input(a) : read_result(a);
     const Overlays ov = overlays_of(a, d);
     write_png(a.output, render_strip(d.arrays.points, d.indices, ov, a.auto_view ? auto_view(d.arrays.points) : a.view, a.style));
-    return kExitOk;
+    return app::kExitOk;
 }
 
 }  // namespace singlestrip::render

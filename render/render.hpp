@@ -117,7 +117,7 @@ struct RenderArgs {
 
 /// `singlestrip render`: reads the result (read_output_mesh) and re-encodes its faces with
 /// encode_triangle_strip, or with `engine` strips the input mesh (stripify()); renders, writes
-/// the PNG. Returns kExitOk.
+/// the PNG. Returns app::kExitOk (src/app/exit_codes.hpp).
 /// \throw InputError (unreadable files, an invalid mesh, a glTF result), RequestError (vertex out of range,
 ///        output not .png, --cycles with an engine, an impossible strip request), OutputError,
 ///        InternalError — for the CLI's usual mapping to exit codes.

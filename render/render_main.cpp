@@ -1,12 +1,12 @@
 // singlestrip-render: `singlestrip render` as its own executable, so that only pictures load
 // OSMesa and LLVM (about 50 MB and 0.17 s): `singlestrip render ...` execs this program.
-// Exit codes and messages are the CLI's (cli/main.cpp, errors.hpp).
+// Exit codes and messages are the CLI's (src/app/exit_codes.hpp).
 #include <CLI/CLI.hpp>
 
 #include <iostream>
-#include <new>
 #include <string>
 
+#include "app/exit_codes.hpp"
 #include "render/render.hpp"
 #include "singlestrip/errors.hpp"
 #include "singlestrip/strip.hpp"
@@ -69,26 +69,17 @@ int main(int argc, char** argv) {
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
         app.exit(e);
-        return ss::kExitUsage;
+        return ss::app::kExitUsage;
     }
-    try {
+    return ss::app::run_reporting_errors([&] {
         if (ra.cycles && ra.engine) {
             std::cerr << "singlestrip: error: render --cycles names faces of a result file; with --engine use --with-cycles\n";
-            return ss::kExitUsage;
+            return int{ss::app::kExitUsage};
         }
         if (ra.with_cycles && !ra.engine) {
             std::cerr << "singlestrip: error: render --with-cycles needs --engine (the input is then stripped first)\n";
-            return ss::kExitUsage;
+            return int{ss::app::kExitUsage};
         }
         return ss::render::run_render_command(ra);
-    } catch (const ss::Error& e) {
-        std::cerr << "singlestrip: error: " << e.what() << '\n';
-        return e.exit_code();
-    } catch (const std::bad_alloc&) {
-        std::cerr << "singlestrip: error: out of memory\n";
-        return ss::kExitInternal;
-    } catch (const std::exception& e) {
-        std::cerr << "singlestrip: error: internal: " << e.what() << '\n';
-        return ss::kExitInternal;
-    }
+    });
 }

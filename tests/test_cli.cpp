@@ -15,6 +15,7 @@
 #include <unistd.h>
 
 #include "cgal_data.hpp"
+#include "shell.hpp"
 #include "singlestrip/encode.hpp"
 #include "singlestrip/io.hpp"
 
@@ -26,27 +27,16 @@ std::string data(const std::string& name) {
     return std::string(SINGLESTRIP_SOURCE_DIR) + "/tests/data/" + name;
 }
 
-struct CliRun {
-    int code = -1;
-    std::string out;  // stdout and stderr, merged
-};
+using CliRun = singlestrip::test::ShellRun;  // out: stdout and stderr, merged
+using singlestrip::test::shell_quote;
+
+std::string q(const std::string& s) {
+    return shell_quote(s);
+}
 
 /// Runs the CLI with `args` (already shell-quoted where needed).
 CliRun cli(const std::string& args) {
-    const std::string cmd = std::string("'") + SINGLESTRIP_CLI_PATH + "' " + args + " 2>&1";
-    CliRun r;
-    FILE* p = ::popen(cmd.c_str(), "r");
-    if (!p) return r;
-    std::array<char, 4096> buf{};
-    size_t n;
-    while ((n = std::fread(buf.data(), 1, buf.size(), p)) > 0) r.out.append(buf.data(), n);
-    const int status = ::pclose(p);
-    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return r;
-}
-
-std::string q(const std::string& s) {
-    return "'" + s + "'";
+    return singlestrip::test::run_shell(q(SINGLESTRIP_CLI_PATH) + " " + args + " 2>&1");
 }
 
 struct Scratch {

@@ -14,6 +14,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "shell.hpp"
+
 namespace fs = std::filesystem;
 using json = nlohmann::json;
 
@@ -28,24 +30,13 @@ std::string data(const std::string& name) {
 }
 
 std::string q(const std::string& s) {
-    return "'" + s + "'";
+    return singlestrip::test::shell_quote(s);
 }
 
-struct Exec {
-    int code = -1;
-    std::string out;  ///< stdout only, or stdout and stderr merged
-};
+using Exec = singlestrip::test::ShellRun;  // out: stdout only, or stdout and stderr merged
 
-/// Runs a shell command line and collects its output.
 Exec shell(const std::string& cmd) {
-    Exec r;
-    FILE* p = ::popen(cmd.c_str(), "r");
-    if (!p) return r;
-    std::array<char, 4096> buf{};
-    for (size_t n; (n = std::fread(buf.data(), 1, buf.size(), p)) > 0;) r.out.append(buf.data(), n);
-    const int status = ::pclose(p);
-    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return r;
+    return singlestrip::test::run_shell(cmd);
 }
 
 /// The CLI with `args`; stderr merged into the output unless `stdout_only`.

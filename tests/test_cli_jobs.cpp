@@ -11,26 +11,16 @@
 #include <iterator>
 #include <string>
 
+#include "shell.hpp"
+
 namespace fs = std::filesystem;
 
 namespace {
 
-struct CliResult {
-    int code = -1;
-    std::string out;
-};
+using CliResult = singlestrip::test::ShellRun;
 
 CliResult cli(const std::string& args) {
-    const std::string cmd = std::string("'") + SINGLESTRIP_CLI_PATH + "' " + args + " 2>&1";
-    CliResult r;
-    FILE* p = ::popen(cmd.c_str(), "r");
-    if (!p) return r;
-    std::array<char, 4096> buf{};
-    size_t n;
-    while ((n = std::fread(buf.data(), 1, buf.size(), p)) > 0) r.out.append(buf.data(), n);
-    const int status = ::pclose(p);
-    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return r;
+    return singlestrip::test::run_shell(singlestrip::test::shell_quote(SINGLESTRIP_CLI_PATH) + " " + args + " 2>&1");
 }
 
 std::string src(const std::string& rel) {

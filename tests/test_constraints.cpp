@@ -10,9 +10,9 @@
 #include <set>
 
 #include "cgal_data.hpp"
+#include "fixtures.hpp"
 #include "singlestrip/cycles.hpp"
 #include "singlestrip/errors.hpp"
-#include "singlestrip/generators.hpp"
 #include "singlestrip/io.hpp"
 #include "singlestrip/mesh.hpp"
 #include "singlestrip/strip.hpp"
@@ -111,26 +111,12 @@ TriangleSoup random_mesh(std::mt19937_64& rng, std::string& name) {
     return soup;
 }
 
-/// Suites over both engines; opts() gives default options on the engine under test.
-class EngineTest : public ::testing::TestWithParam<StripEngine> {
-protected:
-    StripOptions opts() const {
-        StripOptions o;
-        o.engine = GetParam();
-        return o;
-    }
-};
 class Constraints : public EngineTest {};
 class Endpoints : public EngineTest {};
 class ConstraintsReal : public EngineTest {};
 
-std::string engine_test_name(const ::testing::TestParamInfo<StripEngine>& info) {
-    return engine_name(info.param);
-}
-
 }  // namespace
 
-const auto kBothEngines = ::testing::Values(StripEngine::Matching, StripEngine::Growth);
 INSTANTIATE_TEST_SUITE_P(Engines, Constraints, kBothEngines, engine_test_name);
 INSTANTIATE_TEST_SUITE_P(Engines, Endpoints, kBothEngines, engine_test_name);
 INSTANTIATE_TEST_SUITE_P(Engines, ConstraintsReal, kBothEngines, engine_test_name);

@@ -18,10 +18,10 @@
 #include <nlohmann/json.hpp>
 
 #include "cgal_data.hpp"
+#include "fixtures.hpp"
 #include "singlestrip/cycles.hpp"
 #include "singlestrip/encode.hpp"
 #include "singlestrip/errors.hpp"
-#include "singlestrip/generators.hpp"
 #include "singlestrip/io.hpp"
 #include "singlestrip/mesh.hpp"
 #include "singlestrip/strip.hpp"
@@ -235,25 +235,11 @@ TriangleSoup load_real(const std::string& name) {
     return prepare_soup(read_mesh_file(path), PrepareOptions{}, path);
 }
 
-/// Suites over both engines; opts() gives default options on the engine under test.
-class EngineTest : public ::testing::TestWithParam<StripEngine> {
-protected:
-    StripOptions opts() const {
-        StripOptions o;
-        o.engine = GetParam();
-        return o;
-    }
-};
 class StripCycles : public EngineTest {};
 class StripCyclesReal : public EngineTest {};
 
-std::string engine_test_name(const ::testing::TestParamInfo<StripEngine>& info) {
-    return engine_name(info.param);
-}
-
 }  // namespace
 
-const auto kBothEngines = ::testing::Values(StripEngine::Matching, StripEngine::Growth);
 INSTANTIATE_TEST_SUITE_P(Engines, StripCycles, kBothEngines, engine_test_name);
 INSTANTIATE_TEST_SUITE_P(Engines, StripCyclesReal, kBothEngines, engine_test_name);
 
@@ -381,7 +367,7 @@ TEST_P(StripCycles, WritesJsonAndObj) {
     const std::string json_path = ::testing::TempDir() + "ss_cycles_test_" + engine_name(GetParam()) + ".json";
     const std::string obj_path = ::testing::TempDir() + "ss_cycles_test_" + engine_name(GetParam()) + ".obj";
     write_cycles_json(json_path, c);
-    write_cycles_obj(obj_path, a, c);
+    write_cycles_obj(obj_path, cycle_polylines(a, c));
 
     // The verifier's own reader reads the JSON back identically.
     EXPECT_EQ(read_cycles_file(json_path), c.cycles);
@@ -427,7 +413,7 @@ TEST_P(StripCycles, WritesJsonAndObj) {
 TEST(CycleTools, WriteToMissingDirectoryThrowsOutputError) {
     const Cycles c;
     EXPECT_THROW(write_cycles_json("/nonexistent-dir-singlestrip/c.json", c), OutputError);
-    EXPECT_THROW(write_cycles_obj("/nonexistent-dir-singlestrip/c.obj", StripArrays{}, c), OutputError);
+    EXPECT_THROW(write_cycles_obj("/nonexistent-dir-singlestrip/c.obj", cycle_polylines(StripArrays{}, c)), OutputError);
 }
 
 TEST(CycleTools, CycleLengthOfTwoUnitTriangles) {

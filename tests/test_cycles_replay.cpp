@@ -10,8 +10,8 @@
 #include <utility>
 #include <vector>
 
+#include "fixtures.hpp"
 #include "singlestrip/cycles.hpp"
-#include "singlestrip/generators.hpp"
 #include "singlestrip/mesh.hpp"
 #include "singlestrip/strip.hpp"
 #include "singlestrip/verify.hpp"

@@ -12,26 +12,15 @@
 #include <unordered_map>
 #include <vector>
 
+#include "fixtures.hpp"
 #include "singlestrip/encode.hpp"
 #include "singlestrip/errors.hpp"
-#include "singlestrip/generators.hpp"
 #include "singlestrip/mesh.hpp"
 #include "singlestrip/strip.hpp"
 
 using namespace singlestrip;
 
 namespace {
-
-struct Rng {
-    uint64_t state;
-    uint64_t next() {
-        uint64_t z = (state += 0x9e3779b97f4a7c15ull);
-        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-        z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-        return z ^ (z >> 31);
-    }
-    size_t below(size_t n) { return static_cast<size_t>(next() % n); }
-};
 
 /// Rotation with the smallest first index: equal for two triangles iff same vertices and winding.
 Triangle canonical(Triangle t) {

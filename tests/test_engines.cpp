@@ -23,8 +23,8 @@
 #include <utility>
 #include <vector>
 
+#include "fixtures.hpp"
 #include "singlestrip/errors.hpp"
-#include "singlestrip/generators.hpp"
 #include "singlestrip/strip.hpp"
 #include "strip_check.hpp"
 
@@ -371,22 +371,11 @@ bool expect_verified(const TriangleSoup& soup, const StripOptions& options, cons
     }
 }
 
-class Engines : public ::testing::TestWithParam<StripEngine> {
-protected:
-    StripOptions opts() const {
-        StripOptions o;
-        o.engine = GetParam();
-        return o;
-    }
-};
-
-std::string engine_test_name(const ::testing::TestParamInfo<StripEngine>& info) {
-    return engine_name(info.param);
-}
+class Engines : public EngineTest {};
 
 }  // namespace
 
-INSTANTIATE_TEST_SUITE_P(Both, Engines, ::testing::Values(StripEngine::Matching, StripEngine::Growth), engine_test_name);
+INSTANTIATE_TEST_SUITE_P(Both, Engines, kBothEngines, engine_test_name);
 
 // 2000 random meshes per engine: 14 generators at random small sizes, edge flips, extra holes,
 // shuffled vertices and faces, random seed faces, constraint walls that keep the surface

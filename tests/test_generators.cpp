@@ -1,5 +1,5 @@
 // Generators: every mesh is checked by an independent edge-map topology checker (below) and by
-// Mesh::from_soup + validate(); counts and topology must match generators.hpp.
+// Mesh::from_soup + validate(); counts and topology must match fixtures.hpp and singlestrip/models.hpp.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -12,29 +12,14 @@
 #include <unordered_map>
 #include <vector>
 
+#include "../src/algo/union_find.hpp"
+#include "fixtures.hpp"
 #include "singlestrip/errors.hpp"
-#include "singlestrip/generators.hpp"
 #include "singlestrip/mesh.hpp"
 
 using namespace singlestrip;
 
 namespace {
-
-struct Dsu {
-    std::vector<uint32_t> p;
-    explicit Dsu(size_t n) : p(n) { std::iota(p.begin(), p.end(), 0u); }
-    uint32_t find(uint32_t x) {
-        while (p[x] != x) x = p[x] = p[p[x]];
-        return x;
-    }
-    bool unite(uint32_t a, uint32_t b) {
-        a = find(a);
-        b = find(b);
-        if (a == b) return false;
-        p[a] = b;
-        return true;
-    }
-};
 
 uint64_t key(uint32_t a, uint32_t b) {
     return (uint64_t{a} << 32) | b;
@@ -80,13 +65,13 @@ Topology analyze(const TriangleSoup& s) {
             id.try_emplace(a, static_cast<uint32_t>(id.size()));
             id.try_emplace(b, static_cast<uint32_t>(id.size()));
         }
-        Dsu d(id.size());
+        UnionFind d(id.size());
         size_t comps = id.size();
         for (auto [a, b] : link[v]) comps -= d.unite(id[a], id[b]) ? 1 : 0;
         if (comps != 1) return r.problem = "non-manifold vertex " + std::to_string(v), r;
     }
     // Edge-connected components.
-    Dsu faces(s.triangles.size());
+    UnionFind faces(s.triangles.size());
     std::unordered_map<uint64_t, uint32_t> face_of;
     for (uint32_t f = 0; f < s.triangles.size(); ++f)
         for (int k = 0; k < 3; ++k) face_of[key(s.triangles[f][k], s.triangles[f][(k + 1) % 3])] = f;
@@ -388,7 +373,7 @@ void check_walls(const TriangleSoup& s, const Polylines& walls, const std::strin
         cut.insert(e);
     }
     std::map<std::pair<uint32_t, uint32_t>, uint32_t> first_face;
-    Dsu d(s.triangles.size());
+    UnionFind d(s.triangles.size());
     size_t pieces = s.triangles.size();
     for (uint32_t f = 0; f < s.triangles.size(); ++f)
         for (int k = 0; k < 3; ++k) {
@@ -481,7 +466,7 @@ TEST(AwkwardGenerators, SerpentineWallsLeaveOnePath) {
     const auto edges = polyline_edges(closed);
     std::set<std::pair<uint32_t, uint32_t>> cut;
     for (auto [a, b] : edges) cut.insert({std::min(a, b), std::max(a, b)});
-    Dsu d(m.soup.triangles.size());
+    UnionFind d(m.soup.triangles.size());
     std::map<std::pair<uint32_t, uint32_t>, uint32_t> first;
     size_t pieces = m.soup.triangles.size();
     for (uint32_t f = 0; f < m.soup.triangles.size(); ++f)

@@ -27,10 +27,11 @@
 #define TINYGLTF_NO_EXTERNAL_IMAGE
 #include <tiny_gltf.h>
 
+#include "fixtures.hpp"
 #include "singlestrip/encode.hpp"
 #include "singlestrip/errors.hpp"
-#include "singlestrip/generators.hpp"
 #include "singlestrip/gltf.hpp"
+#include "singlestrip/gltf_scene.hpp"
 #include "singlestrip/io.hpp"
 #include "singlestrip/mesh.hpp"
 #include "singlestrip/pipeline.hpp"

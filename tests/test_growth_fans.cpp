@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "many_centres.hpp"
-#include "singlestrip/generators.hpp"
+#include "fixtures.hpp"
 #include "singlestrip/strip.hpp"
 #include "strip_check.hpp"
 

@@ -5,8 +5,8 @@
 #include <type_traits>
 #include <unordered_set>
 
+#include "fixtures.hpp"
 #include "singlestrip/errors.hpp"
-#include "singlestrip/generators.hpp"
 #include "singlestrip/mesh.hpp"
 
 using namespace singlestrip;

@@ -1,4 +1,4 @@
-// PathOrder (src/path_order.hpp), the matching engine's sequence with reversals, against a plain
+// PathOrder (src/algo/path_order.hpp), the matching engine's sequence with reversals, against a plain
 // vector doing the same operations.
 #include <gtest/gtest.h>
 
@@ -7,7 +7,7 @@
 #include <random>
 #include <vector>
 
-#include "../src/path_order.hpp"
+#include "../src/algo/path_order.hpp"
 
 namespace singlestrip {
 namespace {

@@ -5,9 +5,9 @@
 
 #include <string>
 
+#include "fixtures.hpp"
 #include "singlestrip/encode.hpp"
 #include "singlestrip/errors.hpp"
-#include "singlestrip/generators.hpp"
 #include "singlestrip/pipeline.hpp"
 #include "singlestrip/report.hpp"
 

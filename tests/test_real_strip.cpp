@@ -30,22 +30,11 @@ std::string require(const std::string& name) {
     return p;
 }
 
-class RealMeshes : public ::testing::TestWithParam<StripEngine> {
-protected:
-    StripOptions opts() const {
-        StripOptions o;
-        o.engine = GetParam();
-        return o;
-    }
-};
-
-std::string engine_test_name(const ::testing::TestParamInfo<StripEngine>& info) {
-    return engine_name(info.param);
-}
+class RealMeshes : public EngineTest {};
 
 }  // namespace
 
-INSTANTIATE_TEST_SUITE_P(Engines, RealMeshes, ::testing::Values(StripEngine::Matching, StripEngine::Growth), engine_test_name);
+INSTANTIATE_TEST_SUITE_P(Engines, RealMeshes, kBothEngines, engine_test_name);
 
 TEST_P(RealMeshes, EveryValidMeshGivesOneVerifiedStrip) {
     const std::string probe = require("fandisk.off");

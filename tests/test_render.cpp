@@ -16,10 +16,10 @@
 #include <vector>
 
 #include "cgal_data.hpp"
+#include "fixtures.hpp"
 #include "singlestrip/cycles.hpp"
 #include "singlestrip/encode.hpp"
 #include "singlestrip/errors.hpp"
-#include "singlestrip/generators.hpp"
 #include "singlestrip/io.hpp"
 #include "singlestrip/mesh.hpp"
 #include "singlestrip/pipeline.hpp"

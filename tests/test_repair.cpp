@@ -8,9 +8,9 @@
 #include <vector>
 
 #include "cgal_data.hpp"
+#include "fixtures.hpp"
 #include "singlestrip/encode.hpp"
 #include "singlestrip/errors.hpp"
-#include "singlestrip/generators.hpp"
 #include "singlestrip/io.hpp"
 #include "singlestrip/pipeline.hpp"
 #include "singlestrip/repair.hpp"

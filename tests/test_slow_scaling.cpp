@@ -10,7 +10,7 @@
 #include <string>
 
 #include "many_centres.hpp"
-#include "singlestrip/generators.hpp"
+#include "fixtures.hpp"
 #include "singlestrip/strip.hpp"
 #include "strip_check.hpp"
 

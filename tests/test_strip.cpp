@@ -5,9 +5,9 @@
 
 #include <random>
 
+#include "fixtures.hpp"
 #include "singlestrip/cycles.hpp"
 #include "singlestrip/errors.hpp"
-#include "singlestrip/generators.hpp"
 #include "singlestrip/mesh.hpp"
 #include "singlestrip/strip.hpp"
 #include "strip_check.hpp"
@@ -63,23 +63,11 @@ std::vector<Family> families() {
     return f;
 }
 
-class Strip : public ::testing::TestWithParam<StripEngine> {
-protected:
-    /// Default options on the engine under test.
-    StripOptions opts() const {
-        StripOptions o;
-        o.engine = GetParam();
-        return o;
-    }
-};
-
-std::string engine_test_name(const ::testing::TestParamInfo<StripEngine>& info) {
-    return engine_name(info.param);
-}
+class Strip : public EngineTest {};
 
 }  // namespace
 
-INSTANTIATE_TEST_SUITE_P(Engines, Strip, ::testing::Values(StripEngine::Matching, StripEngine::Growth), engine_test_name);
+INSTANTIATE_TEST_SUITE_P(Engines, Strip, kBothEngines, engine_test_name);
 
 TEST_P(Strip, ProceduralFamilies) {
     for (const auto& fam : families()) {

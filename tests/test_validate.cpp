@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "cgal_data.hpp"
+#include "fixtures.hpp"
 #include "singlestrip/errors.hpp"
-#include "singlestrip/generators.hpp"
 #include "singlestrip/io.hpp"
 #include "singlestrip/mesh.hpp"
 #include "singlestrip/validate.hpp"

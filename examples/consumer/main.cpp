@@ -17,20 +17,13 @@ int main(int argc, char** argv) {
         const PipelineResult r = stripify(read_input(input), options);
         const Route route = strip_route(r.arrays);
 
-        VerifyInput check;
-        check.in_points = r.input.points;
-        check.in_faces = r.input.triangles;
-        check.out_points = r.arrays.points;
-        check.out_faces = r.arrays.faces;
-        check.out_parent = r.arrays.parent;
-        check.indices = r.indices;
-        const VerifyReport report = verify(check);
+        const VerifyReport report = verify(verify_input(r.input, r.arrays, r.indices));
 
         std::cout << input << ": " << r.arrays.faces.size() << " faces, " << r.indices.size() << " strip indices, route of "
                   << route.points.size() << " points and length " << route.length << ", verify " << (report.ok() ? "OK" : "FAILED") << '\n';
         return report.ok() ? 0 : 1;
     } catch (const Error& e) {
         std::cerr << "consumer: " << e.what() << '\n';
-        return e.exit_code();
+        return 2;
     }
 }

@@ -87,17 +87,7 @@
 
 namespace singlestrip {
 
-/// Where a cycle came from (see the top of this header).
-enum class CycleSource : uint8_t { SteepestAscent, SteepestDescent, StripSegment, ShortestPath, TreeCotree, ParallelPath };
-
-struct Cycles {
-    /// Face indices into the OUTPUT (strip order), one closed chain per cycle.
-    std::vector<std::vector<uint32_t>> cycles;
-    /// Geometric length of each cycle (see cycle_length()), same order as `cycles`.
-    std::vector<double> lengths;
-    /// How each cycle was obtained (empty for cycles not made by compute_fundamental_cycles()).
-    std::vector<CycleSource> sources;
-};
+// CycleSource and Cycles (the plain result arrays) are in soup.hpp, for the writers in io.
 
 /// Fundamental cycles of the strip (see the top of this header).
 /// \pre `result` comes from build_strip(), either engine: `order` is a permutation of the mesh
@@ -126,6 +116,10 @@ double cycle_length(const StripArrays& arrays, const std::vector<uint32_t>& cycl
 /// The points of that polyline: c0, m01, c1, m12, ..., c_{n-1}, m_{n-1,0} (the closing segment
 /// back to c0 is implicit).
 std::vector<Point3> cycle_polyline(const StripArrays& arrays, const std::vector<uint32_t>& cycle);
+
+/// cycle_polyline() of every cycle (for write_cycles_obj(), io.hpp).
+/// \throw RequestError if a cycle names a face outside `arrays`. O(total cycle length).
+std::vector<std::vector<Point3>> cycle_polylines(const StripArrays& arrays, const Cycles& cycles);
 
 /// Tree–cotree generators (tree_cotree.hpp) of result.mesh indexed in strip order, with their
 /// lengths (cycle_length() on strip_arrays(result)), directly comparable to

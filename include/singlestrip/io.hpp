@@ -31,7 +31,6 @@
 #include <utility>
 #include <vector>
 
-#include "singlestrip/cycles.hpp"
 #include "singlestrip/soup.hpp"
 
 namespace singlestrip {
@@ -106,6 +105,12 @@ void refuse_overwrites(const std::vector<std::pair<std::string, std::string>>& i
 /// \throw RequestError naming the file, the line and the pair. O(F + edges).
 void check_constraint_edges(const std::string& path, const std::vector<ConstraintEdge>& edges, const TriangleSoup& soup);
 
+/// `s` with ASCII letters in lower case (format names and extensions are case-insensitive).
+std::string ascii_lower(std::string s);
+
+/// The extension of `path`'s file name with its dot, lower-cased (".ply"); empty when it has none.
+std::string lower_extension(const std::string& path);
+
 /// Output mesh formats, chosen by extension (glTF has its own writer, gltf.hpp).
 enum class OutputFormat { Ply, Obj, Off, Stl };
 
@@ -143,9 +148,10 @@ void write_text_atomic(const std::string& path, std::string_view text);
 /// \throw OutputError if the file cannot be written.
 void write_cycles_json(const std::string& path, const Cycles& cycles);
 
-/// Writes each cycle as a closed OBJ polyline (`v` lines, then one `l` line per cycle whose last
-/// index repeats its first) through face centroids and shared-edge midpoints, atomically.
+/// Writes each cycle's polyline (cycle_polylines(), cycles.hpp: face centroids and shared-edge
+/// midpoints) as a closed OBJ polyline (`v` lines, then one `l` line per cycle whose last index
+/// repeats its first), atomically.
 /// \throw OutputError if the file cannot be written.
-void write_cycles_obj(const std::string& path, const StripArrays& arrays, const Cycles& cycles);
+void write_cycles_obj(const std::string& path, const std::vector<std::vector<Point3>>& polylines);
 
 }  // namespace singlestrip

@@ -38,7 +38,7 @@ inline constexpr const char* kBuiltinGenus2 = "builtin:genus2";
 bool is_builtin_input(const std::string& input) noexcept;
 
 /// Reads INPUT: a mesh file (read_mesh_file with `options`) or `builtin:genus2` (the demo model
-/// of generators.hpp). \throw InputError as read_mesh_file(); RequestError for an unknown
+/// of models.hpp). \throw InputError as read_mesh_file(); RequestError for an unknown
 /// built-in name. Complexity O(file size).
 TriangleSoup read_input(const std::string& input, const ReadOptions& options = {});
 

@@ -1,5 +1,6 @@
 // singlestrip — the report of one stripped input as JSON: `strip --report`, batch mode's
-// <stem>.report.json and the Python result's "report" all come from report_json().
+// <stem>.report.json and the Python result's "report" all come from report_json(); a glTF scene
+// stripped primitive by primitive has gltf_report_json().
 //
 // Keys: input, output (when given); engine (the engine that built the strip, or the requested
 // one for a failed run); input_triangles, output_triangles, splits, swaps, strip_indices,
@@ -15,8 +16,12 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
+#include "singlestrip/gltf_scene.hpp"
 #include "singlestrip/pipeline.hpp"
+#include "singlestrip/repair.hpp"
+#include "singlestrip/validate.hpp"
 
 namespace singlestrip {
 
@@ -46,5 +51,18 @@ std::string repair_json(const RepairReport& report);
 /// The report as pretty-printed JSON (2-space indent) ending in a newline.
 /// \pre options or result is set. \throw InternalError if neither is. O(cycles).
 std::string report_json(const ReportInput& report);
+
+/// `info --json`: the counts and problems of mesh_info() (validate.hpp) under the keys file,
+/// vertices, referenced_vertices, faces, polygons, edges, boundary_edges, non_manifold_edges,
+/// components, component_sizes, boundary_loops, euler_characteristic, genus (null when not
+/// meaningful), orientable, oriented, faces_flipped_by_orient (when flipped >= 0),
+/// unwelded_vertices, valid, problems [{kind, message}], and repair (repair_json()) when given.
+std::string info_json(const std::string& input, const MeshInfo& info, long long flipped, const RepairReport* repair);
+
+/// `strip --report` of a glTF scene (strip_gltf_file(), gltf_scene.hpp) as pretty-printed JSON:
+/// input, output, primitives [{mesh, primitive, stripped, note, input_triangles,
+/// output_triangles, splits, strips, strip_indices, welded_vertices, attributes, repair}, ...].
+/// O(primitives).
+std::string gltf_report_json(const std::string& input, const std::string& output, const std::vector<GltfPrimitiveResult>& primitives);
 
 }  // namespace singlestrip

@@ -29,7 +29,6 @@
 #include <vector>
 
 #include "singlestrip/soup.hpp"
-#include "singlestrip/strip.hpp"
 
 namespace singlestrip {
 

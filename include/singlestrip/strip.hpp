@@ -83,11 +83,11 @@ struct StripResult {
     std::vector<uint32_t> order;  ///< faces of `mesh` in strip order (a permutation of all faces)
     /// Positions in `order` of the fundamental triangles met (§3.1, seeds of §4's cycles).
     /// Growth builder only; empty from the matching engine (compute_fundamental_cycles() then finds
-    /// them by replaying `order`, src/fundamental_replay.cpp).
+    /// them by replaying `order`, src/algo/fundamental_replay.cpp).
     std::vector<uint32_t> fundamental_positions;
     /// Per face of `mesh`: when it was taken (0 = the seed; the two children of a split strip
     /// face share its time). Faces taken after a fundamental triangle T contain T's parallel path
-    /// (§3.1), which src/cycles.cpp searches for a short cycle.
+    /// (§3.1), which src/algo/cycles.cpp searches for a short cycle.
     std::vector<uint32_t> take_time;
     StripStats stats;
 };
@@ -104,12 +104,7 @@ StripResult build_strip(Mesh mesh, const StripOptions& options = {});
 StripResult build_strip_growth(Mesh mesh, const StripOptions& options);
 StripResult build_strip_matching(Mesh mesh, const StripOptions& options);
 
-/// Output arrays in strip order: faces as vertex triples (orientation kept) and their parents.
-struct StripArrays {
-    std::vector<Point3> points;
-    std::vector<Triangle> faces;
-    std::vector<uint32_t> parent;
-};
+/// The output arrays (StripArrays, soup.hpp) of a strip: faces in strip order. O(V + F).
 StripArrays strip_arrays(const StripResult& result);
 
 }  // namespace singlestrip

@@ -77,6 +77,10 @@ struct VerifyInput {
     bool float32 = false;
 };
 
+/// The VerifyInput of one strip: `input` against `output` (points, faces in strip order, parents)
+/// and its `indices`; constraints, source, target and cycles are the caller's. O(V + F).
+VerifyInput verify_input(const TriangleSoup& input, const StripArrays& output, const std::vector<uint32_t>& indices);
+
 /// The verifier's own GL_TRIANGLE_STRIP decoder (see "indices" above). O(n).
 std::vector<Triangle> verify_decode_strip(const std::vector<uint32_t>& indices, uint32_t restart_index = 0xffffffffu);
 

@@ -6,7 +6,7 @@
 #include <sstream>
 #include <string>
 
-#include "../soup_edges.hpp"
+#include "core/soup_edges.hpp"
 #include "singlestrip/errors.hpp"
 #include "singlestrip/io.hpp"
 

@@ -12,12 +12,8 @@ namespace singlestrip {
 
 TriangleSoup read_mesh_file(const std::string& path, const ReadOptions& options) {
     using namespace io_detail;
-    auto lower = [](std::string s) {
-        std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-        return s;
-    };
-    const std::string named = lower(options.format);
-    const std::string ext = named.empty() ? lower(std::filesystem::path(path).extension().string()) : "." + named;
+    const std::string named = ascii_lower(options.format);
+    const std::string ext = named.empty() ? lower_extension(path) : "." + named;
     TriangleSoup (*reader)(const std::string&, std::string_view) = nullptr;
     if (ext == ".obj")
         reader = read_obj;

@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-#include "singlestrip/cycles.hpp"
+#include "singlestrip/soup.hpp"
 #include "singlestrip/errors.hpp"
 #include "singlestrip/io.hpp"
 
@@ -36,17 +36,14 @@ void write_cycles_json(const std::string& path, const Cycles& cycles) {
     write_text_atomic(path, os.str());
 }
 
-void write_cycles_obj(const std::string& path, const StripArrays& arrays, const Cycles& cycles) {
+void write_cycles_obj(const std::string& path, const std::vector<std::vector<Point3>>& polylines) {
     std::ostringstream os;
     os << std::setprecision(std::numeric_limits<double>::max_digits10);
-    os << "# singlestrip fundamental cycles: " << cycles.cycles.size()
+    os << "# singlestrip fundamental cycles: " << polylines.size()
        << " closed polylines through face centroids and shared-edge midpoints\n";
     std::vector<std::pair<size_t, size_t>> ranges;  // first OBJ vertex (1-based), count
     size_t next = 1;
-    for (const auto& cycle : cycles.cycles) {
-        for (const uint32_t f : cycle)
-            if (f >= arrays.faces.size()) throw OutputError("cycles OBJ '" + path + "': face " + std::to_string(f) + " out of range");
-        const std::vector<Point3> pts = cycle_polyline(arrays, cycle);
+    for (const std::vector<Point3>& pts : polylines) {
         for (const Point3& q : pts) os << "v " << q[0] << ' ' << q[1] << ' ' << q[2] << '\n';
         ranges.emplace_back(next, pts.size());
         next += pts.size();

@@ -19,18 +19,10 @@
 #include "singlestrip/errors.hpp"
 #include "singlestrip/gltf.hpp"
 #include "singlestrip/io.hpp"
+#include "singlestrip/vec3.hpp"
 
 namespace singlestrip {
 namespace {
-
-std::string lower_extension(const std::string& path) {
-    const auto slash = path.find_last_of("/\\");
-    const auto dot = path.find_last_of('.');
-    if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return {};
-    std::string ext = path.substr(dot);
-    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return ext;
-}
 
 template <class T>
 void append_bytes(std::vector<unsigned char>& buf, const T& v) {
@@ -55,15 +47,13 @@ std::vector<Point3> vertex_normals(const std::vector<Point3>& points, const std:
         const Point3& a = points[f[0]];
         const Point3& b = points[f[1]];
         const Point3& c = points[f[2]];
-        const std::array<double, 3> u{b[0] - a[0], b[1] - a[1], b[2] - a[2]};
-        const std::array<double, 3> v{c[0] - a[0], c[1] - a[1], c[2] - a[2]};
         // The unnormalised cross product is twice the area times the unit normal: area weighting.
-        const Point3 cr{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+        const Point3 cr = vec3::cross(vec3::sub(b, a), vec3::sub(c, a));
         for (uint32_t k : f)
             for (int d = 0; d < 3; ++d) n[k][d] += cr[d];
     }
     for (Point3& x : n) {
-        const double len = std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
+        const double len = vec3::norm(x);
         if (len > 0 && std::isfinite(len)) {
             for (double& c : x) c /= len;
         } else {
@@ -75,13 +65,13 @@ std::vector<Point3> vertex_normals(const std::vector<Point3>& points, const std:
 
 void write_gltf_strip(const std::string& path, const StripArrays& a, const std::vector<uint32_t>& strip_indices) {
     const std::string ext = lower_extension(path);
-    if (ext != ".glb" && ext != ".gltf")
-        throw RequestError(path + ": glTF output needs the extension .glb or .gltf");
+    if (ext != ".glb" && ext != ".gltf") throw RequestError(path + ": glTF output needs the extension .glb or .gltf");
     if (strip_indices.empty() || a.faces.empty()) throw RequestError(path + ": nothing to write (empty strip)");
     const size_t nv = a.points.size();
     uint32_t max_index = 0;
     for (uint32_t i : strip_indices) {
-        if (i >= nv) throw RequestError(path + ": strip index " + std::to_string(i) + " is out of range (" + std::to_string(nv) + " vertices)");
+        if (i >= nv)
+            throw RequestError(path + ": strip index " + std::to_string(i) + " is out of range (" + std::to_string(nv) + " vertices)");
         max_index = std::max(max_index, i);
     }
     const bool short_indices = max_index < 65535u;  // 65535 is the (forbidden) restart value
@@ -242,9 +232,10 @@ GltfStrip read_gltf_strip(const std::string& path) {
     if (prim.indices < 0) throw InputError(path + ": primitive has no indices");
     const int ct = model.accessors.at(static_cast<size_t>(prim.indices)).componentType;
     s.index_component_type = ct;
-    const size_t size = ct == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ? 1 : ct == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ? 2
-                        : ct == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT                                         ? 4
-                                                                                                             : 0;
+    const size_t size = ct == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE    ? 1
+                        : ct == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ? 2
+                        : ct == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT   ? 4
+                                                                       : 0;
     if (size == 0) throw InputError(path + ": indices have an unsupported component type");
     auto [p, n] = accessor_bytes(prim.indices, TINYGLTF_TYPE_SCALAR, size);
     s.indices.resize(n);

@@ -85,8 +85,7 @@ void write_binary_stl(std::ostream& out, const std::vector<Point3>& points, cons
 }  // namespace
 
 OutputFormat output_format_for(const std::string& path) {
-    std::string ext = std::filesystem::path(path).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    const std::string ext = lower_extension(path);
     if (ext == ".ply") return OutputFormat::Ply;
     if (ext == ".obj") return OutputFormat::Obj;
     if (ext == ".off") return OutputFormat::Off;

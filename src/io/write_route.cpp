@@ -93,15 +93,10 @@ std::string geojson(const Route& r) {
     return "{\"type\": \"FeatureCollection\", \"features\": [" + features + "]}\n";
 }
 
-std::string lower(std::string s) {
-    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return s;
-}
-
 }  // namespace
 
 RouteFormat parse_route_format(const std::string& name) {
-    const std::string n = lower(name);
+    const std::string n = ascii_lower(name);
     if (n == "csv") return RouteFormat::Csv;
     if (n == "json") return RouteFormat::Json;
     if (n == "obj") return RouteFormat::Obj;
@@ -110,7 +105,7 @@ RouteFormat parse_route_format(const std::string& name) {
 }
 
 RouteFormat route_format_for(const std::string& path) {
-    const std::string ext = lower(std::filesystem::path(path).extension().string());
+    const std::string ext = lower_extension(path);
     if (ext.size() > 1) {
         try {
             return parse_route_format(ext.substr(1));

@@ -2,6 +2,14 @@
 
 #include "singlestrip/pipeline.hpp"
 
+namespace singlestrip {
+
+std::string engine_test_name(const ::testing::TestParamInfo<StripEngine>& info) {
+    return engine_name(info.param);
+}
+
+}  // namespace singlestrip
+
 namespace singlestrip::testing {
 
 StripCheck strip_and_verify(const TriangleSoup& soup, const StripOptions& options) {
@@ -13,13 +21,7 @@ StripCheck strip_and_verify(const TriangleSoup& soup, const StripOptions& option
     c.result = std::move(r.strip);
     c.arrays = std::move(r.arrays);
     c.indices = std::move(r.indices);
-    VerifyInput in;
-    in.in_points = soup.points;
-    in.in_faces = soup.triangles;
-    in.out_points = c.arrays.points;
-    in.out_faces = c.arrays.faces;
-    in.out_parent = c.arrays.parent;
-    in.indices = c.indices;
+    VerifyInput in = verify_input(soup, c.arrays, c.indices);
     in.constraints = options.constraint_edges;
     in.source = index_of(options.source);
     in.target = index_of(options.target);

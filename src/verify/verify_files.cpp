@@ -50,6 +50,17 @@ std::vector<std::string> replay_input_steps(VerifyInput& vi, const InputSteps& s
     return notes;
 }
 
+VerifyInput verify_input(const TriangleSoup& input, const StripArrays& output, const std::vector<uint32_t>& indices) {
+    VerifyInput in;
+    in.in_points = input.points;
+    in.in_faces = input.triangles;
+    in.out_points = output.points;
+    in.out_faces = output.faces;
+    in.out_parent = output.parent;
+    in.indices = indices;
+    return in;
+}
+
 VerifyReport verify_files(const std::string& in_path, const std::string& out_path, const VerifyFileOptions& options) {
     if (is_gltf_path(in_path) && is_gltf_path(out_path) && options.input_format.empty())
         return verify_gltf_scene(in_path, out_path, options.steps);

@@ -12,31 +12,11 @@
 
 #include "singlestrip/cycles.hpp"
 #include "singlestrip/errors.hpp"
+#include "union_find.hpp"
 
 namespace singlestrip {
 
 namespace {
-
-/// Union–find over faces (path halving, union by size): the components of the region.
-class FaceSets {
-public:
-    explicit FaceSets(uint32_t n) : parent_(n), size_(n, 1) { std::iota(parent_.begin(), parent_.end(), 0u); }
-    uint32_t find(uint32_t x) {
-        while (parent_[x] != x) x = parent_[x] = parent_[parent_[x]];
-        return x;
-    }
-    void unite(uint32_t a, uint32_t b) {
-        a = find(a);
-        b = find(b);
-        if (a == b) return;
-        if (size_[a] < size_[b]) std::swap(a, b);
-        parent_[b] = a;
-        size_[a] += size_[b];
-    }
-
-private:
-    std::vector<uint32_t> parent_, size_;
-};
 
 /// Per vertex: how many faces it has and whether it lies on the mesh boundary; with the count of
 /// its faces already in the region this tells whether a face closes the vertex's fan.
@@ -55,7 +35,7 @@ struct VertexFans {
 /// beta1 gained by adding face t to the region `in` (then the caller adds it). Vertices count
 /// once per fan piece, so a vertex whose two edges in t are both shared loses a piece (two
 /// pieces merge) unless t closes its fan (then it stays one piece, now interior).
-long long beta1_gain(const Mesh& mesh, FaceId t, const std::vector<uint8_t>& in, FaceSets& sets, const VertexFans& fans) {
+long long beta1_gain(const Mesh& mesh, FaceId t, const std::vector<uint8_t>& in, UnionFind& sets, const VertexFans& fans) {
     bool shared[3];
     uint32_t roots[3];
     int s = 0, components = 0;
@@ -87,7 +67,7 @@ std::vector<uint32_t> replay_fundamental_positions(const Mesh& mesh, const std::
     const uint32_t nf = mesh.num_faces();
     if (order.size() != nf) throw InternalError("fundamental replay: strip order does not cover the mesh");
     std::vector<uint8_t> in(nf, 0);
-    FaceSets sets(nf);
+    UnionFind sets(nf);
     VertexFans fans(mesh);
     const bool closed = mesh.num_boundary_edges() == 0;
     std::vector<uint32_t> found;  // positions, largest first

@@ -8,9 +8,9 @@
 #include "components.hpp"
 #include "singlestrip/encode.hpp"
 #include "singlestrip/errors.hpp"
-#include "singlestrip/generators.hpp"
 #include "singlestrip/gltf.hpp"
 #include "singlestrip/mesh.hpp"
+#include "singlestrip/models.hpp"
 #include "singlestrip/validate.hpp"
 
 namespace singlestrip {

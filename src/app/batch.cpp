@@ -1,12 +1,11 @@
 // Batch mode: a small thread pool over input files; see batch.hpp.
-#include "singlestrip/batch.hpp"
-
-#include <unistd.h>
+#include "app/batch.hpp"
 
 #include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cstdio>
+#include <exception>
 #include <filesystem>
 #include <map>
 #include <mutex>
@@ -16,6 +15,7 @@
 #include <sstream>
 #include <thread>
 
+#include "app/exit_codes.hpp"
 #include "singlestrip/cycles.hpp"
 #include "singlestrip/errors.hpp"
 #include "singlestrip/gltf.hpp"
@@ -24,7 +24,7 @@
 #include "singlestrip/report.hpp"
 #include "singlestrip/route.hpp"
 
-namespace singlestrip {
+namespace singlestrip::app {
 namespace {
 
 namespace fs = std::filesystem;
@@ -40,16 +40,7 @@ std::string stem_of(const std::string& input) {
 }
 
 PipelineOptions pipeline_options(const BatchOptions& o, const std::string& input) {
-    PipelineOptions p;
-    p.strip.engine = o.engine;
-    p.strip.greedy = o.greedy;
-    p.strip.seed_face = o.seed_face;
-    p.orient = o.orient;
-    p.weld = o.weld;
-    p.repair = o.repair;
-    p.join = o.join;
-    p.restart_index = o.restart_index;
-    p.cycles = o.cycles;
+    PipelineOptions p = o.pipeline;
     p.name = input;
     return p;
 }
@@ -105,15 +96,9 @@ std::optional<PipelineResult> run_one(BatchItem& item, const BatchOptions& o, co
     try {
         result = process(item, o, base);
         item.ok = true;
-    } catch (const Error& e) {
-        item.error = e.what();
-        item.exit_code = e.exit_code();
-    } catch (const std::bad_alloc&) {
-        item.error = "out of memory";
-        item.exit_code = kExitInternal;
     } catch (const std::exception& e) {
-        item.error = std::string("internal: ") + e.what();
-        item.exit_code = kExitInternal;
+        item.error = error_message(e);
+        item.exit_code = exit_code(e);
     }
     return result;
 }
@@ -133,23 +118,11 @@ void write_report(BatchItem& item, const BatchOptions& o, const PipelineResult* 
         if (item.ok) {
             item.ok = false;
             item.error = e.what();
-            item.exit_code = e.exit_code();
+            item.exit_code = exit_code(e);
             std::error_code ec;
             fs::remove(item.output, ec);
         }
     }
-}
-
-/// "\r[#####.....]  3/10  name" on stderr.
-void draw_progress(size_t done, size_t total, size_t failed, const std::string& last) {
-    constexpr int kWidth = 30;
-    const int filled = total ? static_cast<int>(kWidth * done / total) : kWidth;
-    std::string bar(static_cast<size_t>(filled), '#');
-    bar.append(static_cast<size_t>(kWidth - filled), '.');
-    std::string name = last.size() > 40 ? "..." + last.substr(last.size() - 37) : last;
-    std::fprintf(stderr, "\r[%s] %zu/%zu%s  %-40s", bar.c_str(), done, total,
-                 failed ? (" (" + std::to_string(failed) + " failed)").c_str() : "", name.c_str());
-    std::fflush(stderr);
 }
 
 /// Every file the run may write, checked against the inputs before any work.
@@ -162,7 +135,7 @@ void refuse_batch_overwrites(const std::vector<std::string>& files, const std::v
         outputs.emplace_back("result", items[i].output);
         outputs.emplace_back("report", items[i].report);
         if (o.write_indices) outputs.emplace_back("indices", bases[i] + ".indices.txt");
-        if (o.cycles) outputs.emplace_back("cycles", bases[i] + ".cycles.json");
+        if (o.pipeline.cycles) outputs.emplace_back("cycles", bases[i] + ".cycles.json");
         if (o.write_path) outputs.emplace_back("route", bases[i] + ".route.csv");
     }
     refuse_overwrites(inputs, outputs);
@@ -170,9 +143,8 @@ void refuse_batch_overwrites(const std::vector<std::string>& files, const std::v
 
 }  // namespace
 
-BatchResult run_batch_files(const std::vector<std::string>& files, const BatchOptions& o) {
-    std::string fmt = o.format;
-    std::transform(fmt.begin(), fmt.end(), fmt.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+BatchResult run_batch_files(const std::vector<std::string>& files, const BatchOptions& o, const BatchProgressFn& progress) {
+    std::string fmt = ascii_lower(o.format);
     if (!fmt.empty() && fmt[0] == '.') fmt.erase(0, 1);
     if (fmt != "ply" && fmt != "obj" && fmt != "off" && fmt != "stl" && fmt != "glb" && fmt != "gltf")
         throw RequestError("batch: unknown output format '" + o.format + "' (ply, obj, off, stl, glb, gltf)");
@@ -202,7 +174,6 @@ BatchResult run_batch_files(const std::vector<std::string>& files, const BatchOp
     }
     refuse_batch_overwrites(files, res.items, bases, o);
 
-    const bool show = o.progress && isatty(fileno(stderr)) && !files.empty();
     std::atomic<size_t> next{0};
     std::mutex mu;
     size_t done = 0, failed = 0;
@@ -217,7 +188,7 @@ BatchResult run_batch_files(const std::vector<std::string>& files, const BatchOp
             std::lock_guard<std::mutex> lock(mu);
             ++done;
             failed += item.ok ? 0 : 1;
-            if (show) draw_progress(done, files.size(), failed, item.input);
+            if (progress) progress(BatchProgress{done, files.size(), failed, item.input});
         }
     };
     unsigned n = o.threads ? o.threads : std::max(1u, std::thread::hardware_concurrency());
@@ -226,7 +197,6 @@ BatchResult run_batch_files(const std::vector<std::string>& files, const BatchOp
     for (unsigned t = 1; t < n; ++t) pool.emplace_back(worker);
     worker();
     for (auto& t : pool) t.join();
-    if (show) std::fprintf(stderr, "\n");
     res.failed = failed;
     return res;
 }
@@ -271,8 +241,8 @@ std::string batch_summary_table(const BatchResult& r) {
     return o.str();
 }
 
-int run_batch(const std::vector<std::string>& files, const BatchOptions& options, std::ostream& out) {
-    const BatchResult r = run_batch_files(files, options);
+int run_batch(const std::vector<std::string>& files, const BatchOptions& options, std::ostream& out, const BatchProgressFn& progress) {
+    const BatchResult r = run_batch_files(files, options, progress);
     out << batch_summary_table(r);
     out.flush();
     for (const auto& it : r.items)
@@ -280,4 +250,4 @@ int run_batch(const std::vector<std::string>& files, const BatchOptions& options
     return kExitOk;
 }
 
-}  // namespace singlestrip
+}  // namespace singlestrip::app

@@ -130,4 +130,49 @@ std::string report_json(const ReportInput& in) {
     return j.dump(2) + "\n";
 }
 
+std::string info_json(const std::string& input, const MeshInfo& m, long long flipped, const RepairReport* repair) {
+    json j;
+    j["file"] = input;
+    j["vertices"] = m.vertices;
+    j["referenced_vertices"] = m.referenced_vertices;
+    j["faces"] = m.faces;
+    j["polygons"] = m.polygons;
+    j["edges"] = m.edges;
+    j["boundary_edges"] = m.boundary_edges;
+    j["non_manifold_edges"] = m.non_manifold_edges;
+    j["components"] = m.components;
+    j["component_sizes"] = m.component_sizes;
+    j["boundary_loops"] = m.boundary_loops;
+    j["euler_characteristic"] = m.euler_characteristic;
+    j["genus"] = m.genus_valid ? json(m.genus) : json(nullptr);
+    j["orientable"] = m.orientable;
+    j["oriented"] = m.oriented;
+    if (flipped >= 0) j["faces_flipped_by_orient"] = flipped;
+    j["unwelded_vertices"] = m.unwelded_vertices;
+    j["valid"] = m.valid();
+    json ps = json::array();
+    for (const auto& p : m.problems) ps.push_back({{"kind", p.kind}, {"message", p.message}});
+    j["problems"] = ps;
+    if (repair) j["repair"] = repair_json_value(*repair);
+    return j.dump(2) + "\n";
+}
+
+std::string gltf_report_json(const std::string& input, const std::string& output, const std::vector<GltfPrimitiveResult>& primitives) {
+    json j = {{"input", input}, {"output", output}, {"primitives", json::array()}};
+    for (const auto& p : primitives)
+        j["primitives"].push_back({{"mesh", p.mesh},
+                                   {"primitive", p.primitive},
+                                   {"stripped", p.stripped},
+                                   {"note", p.note},
+                                   {"input_triangles", p.input_triangles},
+                                   {"output_triangles", p.output_triangles},
+                                   {"splits", p.splits},
+                                   {"strips", p.strips},
+                                   {"strip_indices", p.strip_indices},
+                                   {"welded_vertices", p.welded},
+                                   {"attributes", p.attributes},
+                                   {"repair", p.repair}});
+    return j.dump(2) + "\n";
+}
+
 }  // namespace singlestrip

@@ -47,7 +47,7 @@ struct ToleranceScope {
 };
 constexpr size_t kMaxPerCheck = 20;  // failure lines kept per check; the rest are counted
 
-// --- tiny vector algebra ------------------------------------------------------------------
+// --- tiny vector algebra: the verifier's own, independent of singlestrip/vec3.hpp by design ---
 using V3 = std::array<double, 3>;
 V3 sub(const V3& a, const V3& b) {
     return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};

@@ -1,4 +1,4 @@
-// glTF in, glTF out (gltf.hpp strip_gltf_file): each triangle primitive is stripped through
+// glTF in, glTF out (gltf_scene.hpp strip_gltf_file): each triangle primitive is stripped through
 // stripify() and rewritten in place as a TRIANGLE_STRIP primitive with new accessors; the rest
 // of the model is left as tinygltf read it.
 #include <algorithm>
@@ -15,6 +15,7 @@
 #include "io/gltf_access.hpp"
 #include "singlestrip/errors.hpp"
 #include "singlestrip/gltf.hpp"
+#include "singlestrip/gltf_scene.hpp"
 #include "singlestrip/io.hpp"
 #include "singlestrip/pipeline.hpp"
 
@@ -261,9 +262,7 @@ std::vector<GltfPrimitiveResult> strip_gltf_file(const std::string& in_path, con
     }
     tinygltf::TinyGLTF writer;
     std::ostringstream os(std::ios::binary);
-    std::string ext = out_path.substr(out_path.find_last_of('.'));
-    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    const bool glb = ext == ".glb";
+    const bool glb = lower_extension(out_path) == ".glb";
     if (!writer.WriteGltfSceneToStream(&model, os, /*prettyPrint=*/false, /*writeBinary=*/glb))
         throw OutputError(out_path + ": glTF serialisation failed");
     write_text_atomic(out_path, os.str());

@@ -424,6 +424,17 @@ std::vector<Point3> cycle_polyline(const StripArrays& arrays, const std::vector<
     return pts;
 }
 
+std::vector<std::vector<Point3>> cycle_polylines(const StripArrays& arrays, const Cycles& cycles) {
+    std::vector<std::vector<Point3>> out;
+    out.reserve(cycles.cycles.size());
+    for (const auto& cycle : cycles.cycles) {
+        for (const uint32_t f : cycle)
+            if (f >= arrays.faces.size()) throw RequestError("cycle face " + std::to_string(f) + " is out of range (" + std::to_string(arrays.faces.size()) + " faces)");
+        out.push_back(cycle_polyline(arrays, cycle));
+    }
+    return out;
+}
+
 double cycle_length(const StripArrays& arrays, const std::vector<uint32_t>& cycle) {
     if (cycle.size() < 2) return 0.0;
     const std::vector<Point3> pts = cycle_polyline(arrays, cycle);

@@ -13,25 +13,12 @@
 
 #include "singlestrip/errors.hpp"
 #include "singlestrip/validate.hpp"
+#include "union_find.hpp"
 
 namespace singlestrip {
 namespace {
 
 constexpr uint32_t kNo = 0xffffffffu;
-
-struct UnionFind {
-    std::vector<uint32_t> parent;
-    explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
-    uint32_t find(uint32_t x) {
-        while (parent[x] != x) x = parent[x] = parent[parent[x]];
-        return x;
-    }
-    void unite(uint32_t a, uint32_t b) {
-        a = find(a);
-        b = find(b);
-        if (a != b) parent[std::max(a, b)] = std::min(a, b);
-    }
-};
 
 /// Half-edges grouped by undirected edge: he[start[g] .. start[g+1]) is group g.
 struct EdgeGroups {

@@ -1,5 +1,5 @@
-// singlestrip — procedural test meshes; see generators.hpp for the counts of each.
-#include "singlestrip/generators.hpp"
+// Test fixtures: procedural test meshes; see fixtures.hpp for the counts of each.
+#include "fixtures.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -21,54 +21,8 @@ void require(bool ok, const char* what) {
     if (!ok) throw RequestError(std::string("generator: ") + what);
 }
 
-/// splitmix64: tiny, fast and identical on every platform (std distributions are not).
-struct Rng {
-    uint64_t state;
-    uint64_t next() {
-        uint64_t z = (state += 0x9e3779b97f4a7c15ull);
-        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-        z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-        return z ^ (z >> 31);
-    }
-    size_t below(size_t n) { return static_cast<size_t>(next() % n); }
-};
-
 uint64_t edge_key(uint32_t a, uint32_t b) {
     return (uint64_t{a} << 32) | b;
-}
-
-/// Grid of nx x ny cells of size `cell`, keeping the cells for which keep(i, j) is true;
-/// vertices no kept cell uses are dropped (indices compacted, row-major order kept).
-template <class Keep>
-TriangleSoup grid_cells(uint32_t nx, uint32_t ny, double cell, Keep keep) {
-    const uint32_t w = nx + 1;
-    std::vector<uint32_t> id(static_cast<size_t>(w) * (ny + 1), kUnused);
-    std::vector<Triangle> raw;
-    for (uint32_t j = 0; j < ny; ++j) {
-        for (uint32_t i = 0; i < nx; ++i) {
-            if (!keep(i, j)) continue;
-            const uint32_t a = j * w + i, b = a + 1, c = a + w + 1, d = a + w;  // CCW corners
-            // Alternating diagonals keep the mesh symmetric (no preferred direction).
-            if ((i + j) % 2 == 0) {
-                raw.push_back({a, b, c});
-                raw.push_back({a, c, d});
-            } else {
-                raw.push_back({a, b, d});
-                raw.push_back({b, c, d});
-            }
-        }
-    }
-    for (const Triangle& t : raw)
-        for (uint32_t v : t) id[v] = 0;
-    TriangleSoup soup;
-    for (uint32_t v = 0; v < id.size(); ++v) {
-        if (id[v] == kUnused) continue;
-        id[v] = static_cast<uint32_t>(soup.points.size());
-        soup.points.push_back({(v % w) * cell, (v / w) * cell, 0.0});
-    }
-    soup.triangles.reserve(raw.size());
-    for (const Triangle& t : raw) soup.triangles.push_back({id[t[0]], id[t[1]], id[t[2]]});
-    return soup;
 }
 
 /// Directed edges a->b of the soup mapped to their face.
@@ -146,6 +100,19 @@ void add_ring_cap(TriangleSoup& s, uint32_t first, uint32_t n) {
     add(first, first + 1, first + 2);
 }
 
+/// Two triangles (a, b, c), (a, c, d) per cell of a rows x cols parameter grid, where
+/// a = id(i, j), b = id(i+1, j), c = id(i+1, j+1), d = id(i, j+1); `id` wraps as the surface does.
+template <class Id>
+void add_quads(TriangleSoup& s, uint32_t rows, uint32_t cols, Id id) {
+    for (uint32_t i = 0; i < rows; ++i) {
+        for (uint32_t j = 0; j < cols; ++j) {
+            const uint32_t a = id(i, j), b = id(i + 1, j), c = id(i + 1, j + 1), d = id(i, j + 1);
+            s.triangles.push_back({a, b, c});
+            s.triangles.push_back({a, c, d});
+        }
+    }
+}
+
 uint32_t rounded(double x) {
     return static_cast<uint32_t>(std::max(1.0, std::round(x)));
 }
@@ -160,7 +127,7 @@ TriangleSoup make_single_triangle() {
 }
 
 TriangleSoup make_two_triangles() {
-    return grid_cells(1, 1, 1.0, [](uint32_t, uint32_t) { return true; });
+    return make_grid_cells(1, 1, 1.0, [](uint32_t, uint32_t) { return true; });
 }
 
 TriangleSoup make_fan(uint32_t k) {
@@ -190,7 +157,7 @@ TriangleSoup make_corridor(uint32_t k) {
 
 TriangleSoup make_grid_disk(uint32_t nx, uint32_t ny) {
     require(nx >= 1 && ny >= 1, "grid needs nx, ny >= 1");
-    return grid_cells(nx, ny, 1.0, [](uint32_t, uint32_t) { return true; });
+    return make_grid_cells(nx, ny, 1.0, [](uint32_t, uint32_t) { return true; });
 }
 
 TriangleSoup make_annulus(uint32_t n_around, uint32_t n_radial) {
@@ -205,24 +172,8 @@ TriangleSoup make_annulus(uint32_t n_around, uint32_t n_radial) {
         }
     }
     // radial x angular = +z, so (inner, outer, outer next) is CCW.
-    for (uint32_t ring = 0; ring < n_radial; ++ring) {
-        for (uint32_t i = 0; i < n_around; ++i) {
-            const uint32_t a = id(ring, i), b = id(ring + 1, i), c = id(ring + 1, i + 1), d = id(ring, i + 1);
-            s.triangles.push_back({a, b, c});
-            s.triangles.push_back({a, c, d});
-        }
-    }
+    add_quads(s, n_radial, n_around, id);
     return s;
-}
-
-TriangleSoup make_disk_with_holes(uint32_t k, uint32_t resolution) {
-    require(resolution >= 1, "disk with holes needs resolution >= 1");
-    const uint32_t r = resolution;
-    return grid_cells((2 * k + 1) * r, 3 * r, 1.0 / r, [r](uint32_t i, uint32_t j) {
-        const bool hole_row = j >= r && j < 2 * r;
-        const bool hole_col = (i / r) % 2 == 1;  // columns of blocks 1, 3, 5, ... are holes
-        return !(hole_row && hole_col);
-    });
 }
 
 TriangleSoup make_icosphere(uint32_t subdivisions) {
@@ -303,37 +254,7 @@ TriangleSoup make_torus(uint32_t n_major, uint32_t n_minor) {
         }
     }
     // d/du x d/dv points outward, so (i,j), (i+1,j), (i+1,j+1) is outward.
-    for (uint32_t i = 0; i < n_major; ++i) {
-        for (uint32_t j = 0; j < n_minor; ++j) {
-            const uint32_t a = id(i, j), b = id(i + 1, j), c = id(i + 1, j + 1), d = id(i, j + 1);
-            s.triangles.push_back({a, b, c});
-            s.triangles.push_back({a, c, d});
-        }
-    }
-    return s;
-}
-
-TriangleSoup make_genus_surface(uint32_t g, uint32_t resolution) {
-    const TriangleSoup top = make_disk_with_holes(g, resolution);
-    const uint32_t nv = static_cast<uint32_t>(top.points.size());
-    const double half = 0.3;
-    TriangleSoup s;
-    s.points.reserve(2 * nv);
-    for (const Point3& p : top.points) s.points.push_back({p[0], p[1], half});
-    for (const Point3& p : top.points) s.points.push_back({p[0], p[1], -half});
-    for (const Triangle& t : top.triangles) s.triangles.push_back(t);
-    for (const Triangle& t : top.triangles) s.triangles.push_back({t[0] + nv, t[2] + nv, t[1] + nv});
-    // Walls: top boundary half-edge a->b (no b->a) pairs with the bottom's b'->a'; the quad
-    // (b, a, a', b') uses b->a and a'->b', so orientation stays consistent.
-    const auto edges = directed_edges(top);
-    for (const Triangle& t : top.triangles) {
-        for (int k = 0; k < 3; ++k) {
-            const uint32_t a = t[k], b = t[(k + 1) % 3];
-            if (edges.count(edge_key(b, a)) != 0) continue;
-            s.triangles.push_back({b, a, a + nv});
-            s.triangles.push_back({b, a + nv, b + nv});
-        }
-    }
+    add_quads(s, n_major, n_minor, id);
     return s;
 }
 
@@ -362,13 +283,6 @@ TriangleSoup make_moebius_soup(uint32_t n) {
         s.triangles.push_back({a, b, c});
         s.triangles.push_back({a, c, d});
     }
-    return s;
-}
-
-TriangleSoup make_builtin_model() {
-    TriangleSoup s = make_genus_surface(2, 8);
-    // The same smooth displacement for both layers keeps the plate free of self-intersections.
-    for (Point3& p : s.points) p[2] += 0.35 * std::sin(1.3 * p[0]) * std::cos(1.7 * p[1]);
     return s;
 }
 
@@ -469,13 +383,14 @@ std::vector<std::pair<uint32_t, uint32_t>> polyline_edges(const Polylines& lines
 
 TriangleSoup make_hole_corridors(uint32_t holes, uint32_t length) {
     require(length >= 1, "hole corridors need length >= 1");
-    return grid_cells(length + 2, 2 * holes + 1, 1.0, [length](uint32_t i, uint32_t j) { return !(j % 2 == 1 && i >= 1 && i <= length); });
+    return make_grid_cells(length + 2, 2 * holes + 1, 1.0,
+                           [length](uint32_t i, uint32_t j) { return !(j % 2 == 1 && i >= 1 && i <= length); });
 }
 
 TriangleSoup make_slit_corridors(uint32_t slits, uint32_t length) {
     require(length >= 2, "slit corridors need length >= 2");
     const uint32_t nx = length + 2, ny = slits + 1, w = nx + 1;
-    TriangleSoup s = grid_cells(nx, ny, 1.0, [](uint32_t, uint32_t) { return true; });
+    TriangleSoup s = make_grid_cells(nx, ny, 1.0, [](uint32_t, uint32_t) { return true; });
     // Grid vertex (x, y) is y*w + x (no cell dropped). Slit y = k has inner vertices x = 2..length.
     const uint32_t grid_vertices = static_cast<uint32_t>(s.points.size());
     auto copy_of = [&](uint32_t v) -> uint32_t {
@@ -522,7 +437,7 @@ WalledMesh make_serpentine_walls(uint32_t walls, uint32_t length) {
 TriangleSoup make_disk_many_holes(uint32_t bx, uint32_t by) {
     require(bx >= 1 && by >= 1, "disk with many holes needs bx, by >= 1");
     const uint32_t n = 10 * bx;
-    const TriangleSoup grid = grid_cells(n, 10 * by, 1.0, [](uint32_t, uint32_t) { return true; });
+    const TriangleSoup grid = make_grid_cells(n, 10 * by, 1.0, [](uint32_t, uint32_t) { return true; });
     // grid_cells emits cell (i, j)'s two faces at 2(j n + i) and 2(j n + i) + 1; for a cell with
     // i + j even the first is (a, b, c), a corner triangle.
     std::vector<char> removed(grid.triangles.size(), 0);
@@ -546,7 +461,7 @@ TriangleSoup make_disk_many_holes(uint32_t bx, uint32_t by) {
 
 TriangleSoup make_eared_grid(uint32_t nx, uint32_t ny) {
     require(nx >= 1 && ny >= 1, "eared grid needs nx, ny >= 1");
-    TriangleSoup s = grid_cells(nx, ny, 1.0, [](uint32_t, uint32_t) { return true; });
+    TriangleSoup s = make_grid_cells(nx, ny, 1.0, [](uint32_t, uint32_t) { return true; });
     const uint32_t w = nx + 1;
     auto add_point = [&](double x, double y) {
         s.points.push_back({x, y, 0.0});

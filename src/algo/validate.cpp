@@ -13,7 +13,7 @@
 #include "singlestrip/errors.hpp"
 #include "singlestrip/mesh.hpp"
 #include "singlestrip/repair.hpp"
-#include "soup_edges.hpp"
+#include "core/soup_edges.hpp"
 
 namespace singlestrip {
 namespace {

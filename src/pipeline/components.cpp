@@ -11,7 +11,7 @@
 #include "singlestrip/encode.hpp"
 #include "singlestrip/errors.hpp"
 #include "singlestrip/mesh.hpp"
-#include "soup_edges.hpp"
+#include "core/soup_edges.hpp"
 
 namespace singlestrip::detail {
 namespace {

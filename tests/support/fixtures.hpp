@@ -1,4 +1,6 @@
-// singlestrip — procedural test meshes and random manifold-preserving perturbations.
+// Test fixtures: procedural test meshes and random manifold-preserving perturbations, for the
+// tests, benchmarks and fuzz targets (library target singlestrip_fixtures; not part of the
+// library or the CLI). The models the library needs itself are in singlestrip/models.hpp.
 //
 // Every generator returns a TriangleSoup with no unreferenced vertices, an empty source_polygon
 // (faces are their own polygons) and consistently oriented faces: counter-clockwise seen from +z
@@ -15,9 +17,30 @@
 #include <utility>
 #include <vector>
 
+#include "singlestrip/models.hpp"
 #include "singlestrip/soup.hpp"
 
 namespace singlestrip {
+
+/// splitmix64 of x: the one random source of the fixtures, tests and fuzz decoders (tiny, fast and
+/// identical on every platform, which std's distributions are not).
+inline uint64_t splitmix64(uint64_t x) {
+    x += 0x9e3779b97f4a7c15ull;
+    x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
+    x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
+    return x ^ (x >> 31);
+}
+
+/// The splitmix64 sequence from `state`.
+struct Rng {
+    uint64_t state;
+    uint64_t next() {
+        const uint64_t z = splitmix64(state);
+        state += 0x9e3779b97f4a7c15ull;
+        return z;
+    }
+    size_t below(size_t n) { return static_cast<size_t>(next() % n); }
+};
 
 /// One triangle. V=3, F=1, chi=1, b=1, g=0.
 TriangleSoup make_single_triangle();
@@ -44,12 +67,6 @@ TriangleSoup make_grid_disk(uint32_t nx, uint32_t ny);
 /// chi=0, b=2, g=0.
 TriangleSoup make_annulus(uint32_t n_around, uint32_t n_radial);
 
-/// Planar grid of (2k+1)r x 3r cells (r = resolution) with k square holes of r x r cells in a row
-/// (hole i covers cells x in [(2i+1)r, (2i+2)r), y in [r, 2r)). \pre resolution >= 1.
-/// V=(nx+1)(ny+1) - k(r-1)^2, F=2(nx ny - k r^2) with nx=(2k+1)r, ny=3r;
-/// chi=1-k, b=k+1, g=0.
-TriangleSoup make_disk_with_holes(uint32_t k, uint32_t resolution);
-
 /// Unit sphere from an icosahedron, each face split into 4 per subdivision.
 /// \pre subdivisions <= 10. V=10*4^s+2, F=20*4^s, chi=2, b=0, g=0.
 TriangleSoup make_icosphere(uint32_t subdivisions);
@@ -62,14 +79,6 @@ TriangleSoup make_uv_sphere(uint32_t n_lon, uint32_t n_lat);
 /// V=n_major n_minor, F=2 n_major n_minor, chi=0, b=0, g=1.
 TriangleSoup make_torus(uint32_t n_major, uint32_t n_minor);
 
-/// Closed surface of genus g: a thickened make_disk_with_holes(g, resolution) plate (cells of
-/// size 1/r, so the plate is (2g+1) x 3 units). The top grid (z=+0.3) and a mirrored bottom grid
-/// (z=-0.3, vertex i+Vt below vertex i) are joined by one band of quads along the outer border
-/// and around each hole. \pre resolution >= 1.
-/// With Vt, Ft the counts of make_disk_with_holes(g, resolution) and Bt = 2(nx+ny) + 4gr its
-/// boundary edges: V=2 Vt, F=2 Ft + 2 Bt, chi=2-2g, b=0.
-TriangleSoup make_genus_surface(uint32_t g, uint32_t resolution);
-
 /// make_genus_surface(g, resolution) with h faces removed by remove_random_faces_as_holes()
 /// (fixed seed). V as make_genus_surface, F = its F - h, chi=2-2g-h, b=h.
 /// \throw RequestError if the surface has too few isolated interior faces for h holes.
@@ -79,11 +88,7 @@ TriangleSoup make_genus_with_holes(uint32_t g, uint32_t h, uint32_t resolution);
 /// two faces in the same direction. For error tests only. \pre n >= 3.
 TriangleSoup make_moebius_soup(uint32_t n);
 
-/// The demo model: a gently waved genus-2 plate, make_genus_surface(2, 8) displaced
-/// (V=1854, F=3712, chi=-2, b=0, g=2).
-TriangleSoup make_builtin_model();
-
-// ---- Awkward families (issue 15): inputs on which strips are costly. Each scales from a few
+// ---- Awkward families (docs/benchmarks.md): inputs on which strips are costly. Each scales from a few
 // dozen to millions of triangles with its size parameters; make_awkward() picks them for a
 // requested triangle count.
 
