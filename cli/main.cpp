@@ -285,7 +285,7 @@ double write_outputs(const StripArgs& a, const ss::PipelineResult& r, OutputSet&
         if (ss::is_gltf_path(p))
             ss::write_gltf_strip(p, r.arrays, ss::degenerate_joined_indices(r));
         else
-            ss::write_strip_mesh(p, r.arrays.points, r.arrays.faces, r.arrays.parent);
+            ss::write_strip_mesh(p, r.arrays.points, r.arrays.faces, r.arrays.parent, r.arrays.attributes);
     });
     if (a.indices) write_one(outputs, *a.indices, "txt", [&](const std::string& p) { ss::write_indices(p, r.indices); });
     if (r.cycles && a.cycles) write_one(outputs, *a.cycles, "json", [&](const std::string& p) { ss::write_cycles_json(p, *r.cycles); });
