@@ -183,12 +183,20 @@ int run_info(const std::string& input, const std::string& format, bool as_json, 
     long long flipped = -1;
     if (orient) flipped = ss::orient_soup(soup);  // -1: not orientable, reported as a problem
     const ss::MeshInfo m = ss::mesh_info(soup);
+    std::vector<std::string> attributes;
+    for (const auto& a : soup.attributes) attributes.push_back(a.name);
     if (as_json) {
         json j = info_json(input, m, orient ? flipped : -1);
+        j["attributes"] = attributes;
         if (repaired) j["repair"] = json::parse(ss::repair_json(*repaired));
         std::cout << j.dump(2) << '\n';
     } else {
-        std::cout << info_text(input, m, orient ? flipped : -1);
+        std::string text = info_text(input, m, orient ? flipped : -1);
+        // Attributes split vertices at seams, which shows in the counts above: say why.
+        std::string line = "attributes:          ";
+        for (const auto& a : attributes) line += " " + a;
+        if (!attributes.empty()) text.insert(text.find("problems:"), line + " (a vertex per position and attribute values)\n");
+        std::cout << text;
     }
     return m.valid() ? ss::kExitOk : ss::kExitBadInput;
 }

@@ -66,7 +66,8 @@ VertexAttribute blend_attribute(const VertexAttribute& in, const std::vector<Att
                 if (s.w[j] != 0) x += s.w[j] * in.values[s.v[j] * k + c];
             val[c] = x;
         }
-        if (in.blend != AttributeBlend::Unit || k < 3) continue;
+        // A vertex that is an input vertex keeps its values exactly (even a file's non-unit normal).
+        if (in.blend != AttributeBlend::Unit || k < 3 || (s.w[1] == 0 && s.w[2] == 0)) continue;
         const double len = std::sqrt(val[0] * val[0] + val[1] * val[1] + val[2] * val[2]);
         for (std::size_t c = 0; c < 3; ++c) val[c] = len > 0 ? val[c] / len : (c == 2 ? 1.0 : 0.0);
         if (k == 4) val[3] = in.values[s.nearest * k + 3];  // TANGENT's handedness is a sign, not a quantity

@@ -111,7 +111,7 @@ struct StripArrays {
     std::vector<uint32_t> parent;
     /// Per output vertex, when the input had attributes (stripify() fills them, attributes.hpp);
     /// strip_arrays() leaves them empty.
-    std::vector<VertexAttribute> attributes;
+    std::vector<VertexAttribute> attributes = {};
 };
 StripArrays strip_arrays(const StripResult& result);
 

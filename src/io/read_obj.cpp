@@ -75,7 +75,7 @@ private:
     void face(Line& l, const char* line_end);
     bool corner_reference(std::string_view t, long long& i, long long* ref);
     void stream_corners(Stream& st, std::size_t k);
-    void check_pending(const std::vector<Pending>& pending, std::size_t count, const std::string& what);
+    void check_pending(const std::vector<Pending>& pending, std::size_t count, const std::string& what, const std::string& records);
     void attach_attributes(TriangleSoup& soup);
 
     const std::string& path_;
@@ -127,8 +127,8 @@ TriangleSoup ObjReader::run() {
             ++skipped_[std::string(kw.substr(0, 20))];
     }
     const std::size_t nv = out_.soup.points.size();
-    check_pending(pending_, nv, "vertex");
-    for (const Stream& st : streams_) check_pending(st.pending, st.records(), std::string(st.what) + " ('" + st.record + "' record)");
+    check_pending(pending_, nv, "vertex", "vertices");
+    for (const Stream& st : streams_) check_pending(st.pending, st.records(), st.what, std::string("'") + st.record + "' records");
     std::string detail = "the file has " + std::to_string(nv) + " vertices and 0 faces";
     if (!skipped_.empty()) {
         detail += "; records not read:";
@@ -140,12 +140,12 @@ TriangleSoup ObjReader::run() {
     return soup;
 }
 
-void ObjReader::check_pending(const std::vector<Pending>& pending, std::size_t count, const std::string& what) {
+void ObjReader::check_pending(const std::vector<Pending>& pending, std::size_t count, const std::string& what, const std::string& records) {
     for (const Pending& q : pending)
         if (q.low < 0 || static_cast<std::size_t>(q.high) >= count) {
             line_ = q.line;
             fail_line("face " + std::to_string(q.face) + " references " + what + " " + std::to_string(q.low < 0 ? q.low : q.high) +
-                      " but the file has only " + std::to_string(count));
+                      " but the file has only " + std::to_string(count) + " " + records);
         }
 }
 
