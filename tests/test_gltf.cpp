@@ -371,6 +371,37 @@ double area(const std::vector<double>& pos, const Triangle& t) {
 
 }  // namespace
 
+// Outputs that carry the input's attributes (OBJ vt/vn, PLY normals, colours, texture
+// coordinates and custom scalars): zero errors and zero warnings, every attribute present.
+TEST(Gltf, AttributeCarryingOutputsValidate) {
+    std::string why;
+    const std::string dir = validator_dir(why);
+    for (const char* name : {"sphere_uv.obj", "sphere_attrs.ply"}) {
+        SCOPED_TRACE(name);
+        const PipelineResult r = stripify(read_mesh_file(std::string(SINGLESTRIP_SOURCE_DIR) + "/tests/data/" + name), PipelineOptions{});
+        for (const char* ext : {".glb", ".gltf"}) {
+            const std::string file = fs::absolute(scratch_dir() / (std::string("attrs_") + name + ext)).string();
+            write_gltf_strip(file, r.arrays, degenerate_joined_indices(r));
+            const tinygltf::Model m = load_any(file);
+            const auto& attrs = m.meshes[0].primitives[0].attributes;
+            EXPECT_EQ(attrs.size(), r.arrays.attributes.size() + 1) << "POSITION and one accessor per attribute";
+            EXPECT_EQ(attrs.count("TEXCOORD_0"), 1u);
+            EXPECT_EQ(attrs.count("NORMAL"), 1u);
+            if (std::string(name) == "sphere_attrs.ply") {
+                EXPECT_EQ(attrs.count("COLOR_0"), 1u);
+                EXPECT_EQ(attrs.count("_QUALITY"), 1u);
+                EXPECT_EQ(attrs.count("_ID"), 1u);
+            }
+            if (dir.empty()) continue;
+            const nlohmann::json v = validate_gltf(dir, file);
+            ASSERT_TRUE(v.is_object() && v.contains("issues")) << v.dump();
+            EXPECT_EQ(v["issues"]["numErrors"].get<int>(), 0) << file << ": " << v["issues"].dump(1);
+            EXPECT_EQ(v["issues"]["numWarnings"].get<int>(), 0) << file << ": " << v["issues"].dump(1);
+        }
+    }
+    if (dir.empty()) GTEST_SKIP() << "checked; Khronos glTF-Validator unavailable: " << why;
+}
+
 TEST(GltfInput, ReadsEveryTrianglePrimitive) {
     for (const char* f : {"scene.gltf", "scene.glb"}) {
         const TriangleSoup s = read_gltf_soup(std::string(SINGLESTRIP_SOURCE_DIR) + "/tests/data/" + f);
