@@ -328,6 +328,21 @@ void check_strip_outputs(const StripArgs& a) {
     ss::refuse_overwrites(inputs, outputs);
 }
 
+/// The input's attributes that OUT's format has no place for (README, "Vertex attributes").
+std::vector<std::string> attributes_not_written(const StripArgs& a, const ss::PipelineResult& r) {
+    const std::string out = a.output == "-" ? "standard output." + a.format : a.output;
+    std::vector<std::string> lost;
+    for (const auto& at : r.arrays.attributes) {
+        bool kept = ss::is_gltf_path(out);
+        if (!kept) {
+            const ss::OutputFormat f = ss::output_format_for(out);
+            kept = f == ss::OutputFormat::Ply || (f == ss::OutputFormat::Obj && (at.name == "TEXCOORD_0" || at.name == "NORMAL"));
+        }
+        if (!kept) lost.push_back(at.name);
+    }
+    return lost;
+}
+
 void print_summary(const std::string& input, const ss::PipelineResult& r) {
     const auto& st = r.strip.stats;
     const auto& t = r.seconds;
@@ -406,6 +421,12 @@ int run_strip(const StripArgs& a) {
     }
     outputs.commit();
     print_summary(a.input, r);
+    // Never drop what the input carried without a word (issue 18).
+    if (const auto lost = attributes_not_written(a, r); !lost.empty()) {
+        std::cerr << "singlestrip: " << a.input << ": note: " << a.output << " has no place for the vertex attributes";
+        for (const auto& n : lost) std::cerr << ' ' << n;
+        std::cerr << " (.ply keeps them all; .obj keeps TEXCOORD_0 and NORMAL)\n";
+    }
     return ss::kExitOk;
 }
 

@@ -249,39 +249,42 @@ void ObjReader::stream_corners(Stream& st, std::size_t k) {
     r.clear();
 }
 
+using AttributeKey = std::array<uint32_t, 2>;  // the vt and vn records of a vertex (kept streams)
+
+/// Re-points every corner to the vertex of its (position, records) combination, appending a
+/// copy of the position for each combination after a position's first; returns each vertex's
+/// records. \pre every kept stream has a record per corner.
+std::vector<AttributeKey> split_at_seams(TriangleSoup& soup, const std::vector<const Stream*>& kept, const std::string& path) {
+    std::vector<AttributeKey> key(soup.points.size(), AttributeKey{kAbsent, kAbsent});
+    std::vector<char> used(soup.points.size(), 0);
+    std::map<std::pair<uint32_t, AttributeKey>, uint32_t> extra;  // seams: a few percent of the vertices
+    for (std::size_t corner = 0; corner < 3 * soup.triangles.size(); ++corner) {
+        uint32_t& v = soup.triangles[corner / 3][corner % 3];
+        AttributeKey k{kAbsent, kAbsent};
+        for (std::size_t s = 0; s < kept.size(); ++s) k[s] = kept[s]->corner[corner];
+        if (!used[v]) {
+            used[v] = 1;
+            key[v] = k;
+        } else if (key[v] != k) {
+            const auto [it, added] = extra.try_emplace({v, k}, static_cast<uint32_t>(soup.points.size()));
+            if (added) {
+                if (soup.points.size() >= 0xfffffffeu) fail(path, "too many vertices with their attributes (more than 2^32-2)");
+                soup.points.push_back(soup.points[v]);
+                key.push_back(k);
+            }
+            v = it->second;
+        }
+    }
+    return key;
+}
+
 /// Makes a vertex of every (position, vt, vn) combination the faces use (see the contract).
 void ObjReader::attach_attributes(TriangleSoup& soup) {
     std::vector<const Stream*> kept;
     for (const Stream& st : streams_)
         if (st.complete && !st.corner.empty()) kept.push_back(&st);
     if (kept.empty()) return;
-    using Key = std::array<uint32_t, 2>;
-    auto key_of = [&](std::size_t corner) {
-        Key k{kAbsent, kAbsent};
-        for (std::size_t s = 0; s < kept.size(); ++s) k[s] = kept[s]->corner[corner];
-        return k;
-    };
-    const std::size_t n = soup.points.size();
-    std::vector<Key> key(n, Key{kAbsent, kAbsent});
-    std::vector<char> used(n, 0);
-    std::map<std::pair<uint32_t, Key>, uint32_t> extra;  // seams: a few percent of the vertices
-    for (std::size_t f = 0; f < soup.triangles.size(); ++f)
-        for (std::size_t c = 0; c < 3; ++c) {
-            uint32_t& v = soup.triangles[f][c];
-            const Key k = key_of(3 * f + c);
-            if (!used[v]) {
-                used[v] = 1;
-                key[v] = k;
-            } else if (key[v] != k) {
-                const auto [it, added] = extra.try_emplace({v, k}, static_cast<uint32_t>(soup.points.size()));
-                if (added) {
-                    if (soup.points.size() >= 0xfffffffeu) fail(path_, "too many vertices with their attributes (more than 2^32-2)");
-                    soup.points.push_back(soup.points[v]);
-                    key.push_back(k);
-                }
-                v = it->second;
-            }
-        }
+    const std::vector<AttributeKey> key = split_at_seams(soup, kept, path_);
     for (std::size_t s = 0; s < kept.size(); ++s) {
         const Stream& st = *kept[s];
         VertexAttribute a{st.width == 2 ? "TEXCOORD_0" : "NORMAL",
@@ -289,7 +292,7 @@ void ObjReader::attach_attributes(TriangleSoup& soup) {
                           st.width == 3 ? AttributeBlend::Unit : AttributeBlend::Linear,
                           {}};
         a.values.reserve(key.size() * st.width);
-        for (const Key& k : key)
+        for (const AttributeKey& k : key)  // vertices no face uses get zeros
             for (std::size_t c = 0; c < st.width; ++c) a.values.push_back(k[s] == kAbsent ? 0.0 : st.values[k[s] * st.width + c]);
         soup.attributes.push_back(std::move(a));
     }
