@@ -336,7 +336,8 @@ std::vector<std::string> attributes_not_written(const StripArgs& a, const ss::Pi
         bool kept = ss::is_gltf_path(out);
         if (!kept) {
             const ss::OutputFormat f = ss::output_format_for(out);
-            kept = f == ss::OutputFormat::Ply || (f == ss::OutputFormat::Obj && (at.name == "TEXCOORD_0" || at.name == "NORMAL"));
+            kept = f == ss::OutputFormat::Ply ||
+                   (f == ss::OutputFormat::Obj && (at.name == "TEXCOORD_0" || at.name == "NORMAL" || at.name == "COLOR_0"));
         }
         if (!kept) lost.push_back(at.name);
     }
@@ -425,7 +426,7 @@ int run_strip(const StripArgs& a) {
     if (const auto lost = attributes_not_written(a, r); !lost.empty()) {
         std::cerr << "singlestrip: " << a.input << ": note: " << a.output << " has no place for the vertex attributes";
         for (const auto& n : lost) std::cerr << ' ' << n;
-        std::cerr << " (.ply keeps them all; .obj keeps TEXCOORD_0 and NORMAL)\n";
+        std::cerr << " (.ply keeps them all; .obj keeps TEXCOORD_0, NORMAL and COLOR_0)\n";
     }
     return ss::kExitOk;
 }

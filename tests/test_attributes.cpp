@@ -227,6 +227,37 @@ TEST(ObjAttributes, AStreamOnlySomeCornersHaveIsNotKept) {
     EXPECT_EQ(s.points.size(), 6u);
 }
 
+TEST(ObjAttributes, VertexColoursAreKeptAndFollowTheSeams) {
+    Scratch dir("colours");
+    std::ifstream in(data("sphere_uv.obj"));
+    std::string obj, line;
+    int v = 0;
+    while (std::getline(in, line)) {
+        if (line.rfind("v ", 0) == 0) line += " " + std::to_string(v++ % 2) + " 0.5 0.25";
+        obj += line + "\n";
+    }
+    write_file(dir / "c.obj", obj);
+    const TriangleSoup s = read_mesh_file(dir / "c.obj");
+    const VertexAttribute* c = find_attribute(s.attributes, "COLOR_0");
+    ASSERT_NE(c, nullptr);
+    ASSERT_EQ(c->values.size(), 3 * s.points.size());
+    for (size_t u = 0; u < s.points.size(); ++u)
+        for (size_t w = 0; w < 42; ++w)
+            if (s.points[u] == s.points[w]) {
+                EXPECT_EQ(c->values[3 * u], c->values[3 * w]) << u;  // seam copies: their position's colour
+            }
+    const auto [code, text] = cli("strip '" + dir / "c.obj" + "' -o '" + dir / "o.obj" + "'");
+    ASSERT_EQ(code, 0) << text;
+    const VertexAttribute* back = find_attribute(read_mesh_file(dir / "o.obj").attributes, "COLOR_0");
+    ASSERT_NE(back, nullptr);
+    for (size_t i = 0; i < c->values.size(); ++i) EXPECT_EQ(back->values[i], c->values[i]);
+    // One vertex without a colour: no COLOR_0 (a "v x y z w" file is not coloured either).
+    write_file(dir / "partial.obj", "v 0 0 0 1 0 0\nv 1 0 0\nv 0 1 0 0 0 1\nf 1 2 3\n");
+    EXPECT_TRUE(read_mesh_file(dir / "partial.obj").attributes.empty());
+    write_file(dir / "w.obj", "v 0 0 0 1\nv 1 0 0 1\nv 0 1 0 1\nf 1 2 3\n");
+    EXPECT_TRUE(read_mesh_file(dir / "w.obj").attributes.empty());
+}
+
 TEST(PlyAttributes, VertexPropertiesAreReadCarriedAndWrittenBack) {
     Scratch dir("ply");
     const std::string in = data("sphere_attrs.ply");

@@ -14,6 +14,8 @@
 // position i with the attributes of its first corner, and each further combination at a
 // position is a new vertex appended after them, in order of first appearance; the seam between
 // two combinations is a boundary for the strip. A stream only some corners have is not kept.
+// Vertex colours "v x y z r g b" (every vertex with exactly three numbers after z) become
+// COLOR_0, copied to a position's seam vertices.
 #include <algorithm>
 #include <array>
 #include <cstring>
@@ -71,6 +73,7 @@ private:
 
     [[noreturn]] void fail_line(const std::string& what) const { fail(path_, "line " + std::to_string(line_) + ": " + what); }
     void vertex(Line& l);
+    void vertex_colour(Line& l);
     void attribute_record(Line& l, Stream& st, std::size_t required);
     void face(Line& l, const char* line_end);
     bool corner_reference(std::string_view t, long long& i, long long* ref);
@@ -87,6 +90,8 @@ private:
     std::array<std::vector<long long>, 2> refs_;  // vt and vn of the current face's corners (or kNoRef)
     std::array<Stream, 2> streams_{Stream{"vt", "texture coordinate", 2}, Stream{"vn", "normal", 3}};
     std::vector<Pending> pending_;
+    std::vector<double> colours_;  // 3 per vertex while every vertex so far has a colour
+    bool all_coloured_ = true;
     std::map<std::string, std::size_t> skipped_;  // record keyword -> lines, for the "no faces" message
 };
 
@@ -172,6 +177,26 @@ void ObjReader::vertex(Line& l) {
     }
     if (out_.soup.points.size() >= 0xfffffffeu) fail_line("too many vertices (more than 2^32-2)");
     out_.soup.points.push_back(p);
+    vertex_colour(l);
+}
+
+/// The common "v x y z r g b" extension: kept when every vertex has exactly three more numbers;
+/// anything else after z (w, text) is ignored as before.
+void ObjReader::vertex_colour(Line& l) {
+    if (!all_coloured_) return;
+    double c[3];
+    std::size_t k = 0;
+    for (std::string_view t = l.token(); !t.empty() && t[0] != '#'; t = l.token(), ++k)
+        if (k >= 3 || !parse_real(t, c[k])) {
+            k = 0;
+            break;
+        }
+    if (k != 3) {
+        all_coloured_ = false;
+        colours_ = {};
+        return;
+    }
+    colours_.insert(colours_.end(), c, c + 3);
 }
 
 /// One corner reference "i[/[t][/[n]]]": the numbers as written (0 where absent), or false.
@@ -254,7 +279,8 @@ using AttributeKey = std::array<uint32_t, 2>;  // the vt and vn records of a ver
 /// Re-points every corner to the vertex of its (position, records) combination, appending a
 /// copy of the position for each combination after a position's first; returns each vertex's
 /// records. \pre every kept stream has a record per corner.
-std::vector<AttributeKey> split_at_seams(TriangleSoup& soup, const std::vector<const Stream*>& kept, const std::string& path) {
+std::vector<AttributeKey> split_at_seams(TriangleSoup& soup, const std::vector<const Stream*>& kept, const std::string& path,
+                                         std::vector<uint32_t>& origin) {
     std::vector<AttributeKey> key(soup.points.size(), AttributeKey{kAbsent, kAbsent});
     std::vector<char> used(soup.points.size(), 0);
     std::map<std::pair<uint32_t, AttributeKey>, uint32_t> extra;  // seams: a few percent of the vertices
@@ -271,6 +297,7 @@ std::vector<AttributeKey> split_at_seams(TriangleSoup& soup, const std::vector<c
                 if (soup.points.size() >= 0xfffffffeu) fail(path, "too many vertices with their attributes (more than 2^32-2)");
                 soup.points.push_back(soup.points[v]);
                 key.push_back(k);
+                origin.push_back(v);
             }
             v = it->second;
         }
@@ -283,8 +310,10 @@ void ObjReader::attach_attributes(TriangleSoup& soup) {
     std::vector<const Stream*> kept;
     for (const Stream& st : streams_)
         if (st.complete && !st.corner.empty()) kept.push_back(&st);
-    if (kept.empty()) return;
-    const std::vector<AttributeKey> key = split_at_seams(soup, kept, path_);
+    const std::size_t n_file = soup.points.size();
+    std::vector<uint32_t> origin(n_file);  // the file vertex of each vertex
+    for (uint32_t v = 0; v < origin.size(); ++v) origin[v] = v;
+    const std::vector<AttributeKey> key = kept.empty() ? std::vector<AttributeKey>() : split_at_seams(soup, kept, path_, origin);
     for (std::size_t s = 0; s < kept.size(); ++s) {
         const Stream& st = *kept[s];
         VertexAttribute a{st.width == 2 ? "TEXCOORD_0" : "NORMAL",
@@ -296,6 +325,10 @@ void ObjReader::attach_attributes(TriangleSoup& soup) {
             for (std::size_t c = 0; c < st.width; ++c) a.values.push_back(k[s] == kAbsent ? 0.0 : st.values[k[s] * st.width + c]);
         soup.attributes.push_back(std::move(a));
     }
+    if (!all_coloured_ || colours_.size() != 3 * n_file) return;
+    VertexAttribute colour{"COLOR_0", 3, AttributeBlend::Linear, {}};
+    for (uint32_t v : origin) colour.values.insert(colour.values.end(), &colours_[3 * v], &colours_[3 * v] + 3);
+    soup.attributes.push_back(std::move(colour));
 }
 
 }  // namespace

@@ -161,7 +161,7 @@ void put_numbers(std::ostream& out, const char* record, const double* x, std::si
 }
 
 /// OBJ holds texture coordinates and normals: one vt / vn per vertex, so every index stream of
-/// a face is the vertex number ("f a/a/a").
+/// a face is the vertex number ("f a/a/a"); colours go after the coordinates ("v x y z r g b").
 void write_obj(std::ostream& out, const std::vector<Point3>& points, const std::vector<Triangle>& faces,
                const std::vector<VertexAttribute>& attrs) {
     const VertexAttribute* uv = find_attribute(attrs, "TEXCOORD_0");
@@ -169,7 +169,21 @@ void write_obj(std::ostream& out, const std::vector<Point3>& points, const std::
     if (uv && uv->components != 2) uv = nullptr;
     if (n && n->components != 3) n = nullptr;
     out << "# singlestrip: faces in strip order\n";
-    for (const auto& p : points) put_numbers(out, "v", p.data(), 3);
+    const VertexAttribute* rgb = find_attribute(attrs, "COLOR_0");  // "v x y z r g b", the common extension
+    if (rgb && rgb->components < 3) rgb = nullptr;
+    for (std::size_t v = 0; v < points.size(); ++v) {
+        if (!rgb) {
+            put_numbers(out, "v", points[v].data(), 3);
+            continue;
+        }
+        const double x[6] = {points[v][0],
+                             points[v][1],
+                             points[v][2],
+                             rgb->values[v * rgb->components],
+                             rgb->values[v * rgb->components + 1],
+                             rgb->values[v * rgb->components + 2]};
+        put_numbers(out, "v", x, 6);
+    }
     if (uv)
         for (std::size_t v = 0; v < points.size(); ++v) put_numbers(out, "vt", &uv->values[2 * v], 2);
     if (n)
