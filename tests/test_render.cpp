@@ -173,7 +173,7 @@ std::vector<double> uv_without_interpolation(const PipelineResult& r, std::vecto
 // Issue 18, item 4: the pictures of input and output compared with the textures on. The input's
 // texture coordinates (OBJ vt with seams, PLY s/t, glTF TEXCOORD_0) are drawn on the input
 // triangles, the output's (midpoints interpolated) on the strip; they must agree up to rounding
-// of the interpolation (a bilinear texture: at most a few levels) on every pixel, and a strip
+// of the interpolation (a bilinear texture: at most 2 levels; 1 measured) on every pixel, and a strip
 // whose midpoints were not interpolated must not.
 TEST(Render, TexturedStripLooksLikeTheTexturedInput) {
     for (const char* name : {"sphere_uv.obj", "sphere_attrs.ply", "scene.glb"}) {
@@ -186,6 +186,7 @@ TEST(Render, TexturedStripLooksLikeTheTexturedInput) {
         const std::vector<double> uv_bad = uv_without_interpolation(r, uv_out);
         const std::vector<uint32_t> tris = flatten(r.input.triangles);
         size_t covered_px = 0, worst = 0, bad = 0;
+        int largest = 0;  // largest channel difference between input and strip, for the log
         for (size_t v = 0; v < kViews.size(); ++v) {
             SCOPED_TRACE("view " + std::to_string(v));
             const auto& pts = r.input.points;
@@ -196,13 +197,14 @@ TEST(Render, TexturedStripLooksLikeTheTexturedInput) {
                 render::render_textured(r.arrays.points, uv_bad, r.indices, render::Primitive::TriangleStrip, pts, kViews[v], kW, kH);
             for (size_t i = 3; i < in.size(); i += 4) covered_px += in[i] != 0;
             EXPECT_EQ(differing_rgba(in, out, 255 - 1), 0u) << "coverage differs";
-            worst = std::max(worst, differing_rgba(in, out, 6));
-            bad += differing_rgba(in, wrong, 6);
+            worst = std::max(worst, differing_rgba(in, out, 2));
+            for (size_t i = 0; i < in.size(); ++i) largest = std::max(largest, std::abs(int(in[i]) - int(out[i])));
+            bad += differing_rgba(in, wrong, 2);
         }
         std::cerr << "[ render   ] " << name << ": " << covered_px << " textured pixels, " << worst
-                  << " differ by more than 6 levels; without interpolation " << bad << '\n';
+                  << " differ by more than 2 levels (largest difference " << largest << "); without interpolation " << bad << '\n';
         EXPECT_GT(covered_px, static_cast<size_t>(kW * kH / 20));
-        EXPECT_EQ(worst, 0u) << "pixels whose colour differs by more than 6 levels";
+        EXPECT_EQ(worst, 0u) << "pixels whose colour differs by more than 2 levels";
         EXPECT_GT(bad, 20u) << "uninterpolated midpoints must show";
     }
 }
