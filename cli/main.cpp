@@ -157,10 +157,17 @@ int run_info(const std::string& input, const std::string& format, bool as_json, 
     long long flipped = -1;
     if (orient) flipped = ss::orient_soup(soup);  // -1: not orientable, reported as a problem
     const ss::MeshInfo m = ss::mesh_info(soup);
+    std::vector<std::string> attributes;
+    for (const auto& a : soup.attributes) attributes.push_back(a.name);
     if (as_json) {
-        std::cout << ss::info_json(input, m, orient ? flipped : -1, repaired ? &*repaired : nullptr);
+        std::cout << ss::info_json(input, m, orient ? flipped : -1, repaired ? &*repaired : nullptr, attributes);
     } else {
-        std::cout << info_text(input, m, orient ? flipped : -1);
+        std::string text = info_text(input, m, orient ? flipped : -1);
+        // Attributes split vertices at seams, which shows in the counts above: say why.
+        std::string line = "attributes:          ";
+        for (const auto& a : attributes) line += " " + a;
+        if (!attributes.empty()) text.insert(text.find("problems:"), line + " (a vertex per position and attribute values)\n");
+        std::cout << text;
     }
     return m.valid() ? app::kExitOk : app::kExitBadInput;
 }
@@ -257,7 +264,7 @@ double write_outputs(const StripArgs& a, const ss::PipelineResult& r, OutputSet&
         if (ss::is_gltf_path(p))
             ss::write_gltf_strip(p, r.arrays, ss::degenerate_joined_indices(r));
         else
-            ss::write_strip_mesh(p, r.arrays.points, r.arrays.faces, r.arrays.parent);
+            ss::write_strip_mesh(p, r.arrays.points, r.arrays.faces, r.arrays.parent, r.arrays.attributes);
     });
     if (a.indices) write_one(outputs, *a.indices, "txt", [&](const std::string& p) { ss::write_indices(p, r.indices); });
     if (r.cycles && a.cycles) write_one(outputs, *a.cycles, "json", [&](const std::string& p) { ss::write_cycles_json(p, *r.cycles); });
@@ -290,6 +297,22 @@ void check_strip_outputs(const StripArgs& a) {
                                   {"--path", a.path}})
         if (p) outputs.emplace_back(what, *p);
     ss::refuse_overwrites(inputs, outputs);
+}
+
+/// The input's attributes that OUT's format has no place for (README, "Vertex attributes").
+std::vector<std::string> attributes_not_written(const StripArgs& a, const ss::PipelineResult& r) {
+    const std::string out = a.output == "-" ? "standard output." + a.format : a.output;
+    std::vector<std::string> lost;
+    for (const auto& at : r.arrays.attributes) {
+        bool kept = ss::is_gltf_path(out);
+        if (!kept) {
+            const ss::OutputFormat f = ss::output_format_for(out);
+            kept = f == ss::OutputFormat::Ply ||
+                   (f == ss::OutputFormat::Obj && (at.name == "TEXCOORD_0" || at.name == "NORMAL" || at.name == "COLOR_0"));
+        }
+        if (!kept) lost.push_back(at.name);
+    }
+    return lost;
 }
 
 void print_summary(const std::string& input, const ss::PipelineResult& r) {
@@ -357,6 +380,12 @@ int run_strip(const StripArgs& a) {
     }
     outputs.commit();
     print_summary(a.input, r);
+    // Never drop what the input carried without a word (issue 18).
+    if (const auto lost = attributes_not_written(a, r); !lost.empty()) {
+        std::cerr << "singlestrip: " << a.input << ": note: " << a.output << " has no place for the vertex attributes";
+        for (const auto& n : lost) std::cerr << ' ' << n;
+        std::cerr << " (.ply keeps them all; .obj keeps TEXCOORD_0, NORMAL and COLOR_0)\n";
+    }
     return app::kExitOk;
 }
 

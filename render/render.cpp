@@ -321,6 +321,65 @@ std::vector<uint8_t> render_coverage(const std::vector<Point3>& points, const st
     return counts;
 }
 
+namespace {
+
+/// The texture of render_textured(): smooth ramps show a wrong interpolation, the checkerboard
+/// a wrong texel.
+std::vector<uint8_t> test_texture(int n) {
+    std::vector<uint8_t> t(static_cast<size_t>(n) * static_cast<size_t>(n) * 3);
+    for (int y = 0; y < n; ++y)
+        for (int x = 0; x < n; ++x) {
+            uint8_t* p = &t[3 * (static_cast<size_t>(y) * static_cast<size_t>(n) + static_cast<size_t>(x))];
+            p[0] = static_cast<uint8_t>(255 * x / (n - 1));
+            p[1] = static_cast<uint8_t>(255 * y / (n - 1));
+            p[2] = ((x / 8 + y / 8) % 2) ? 255 : 0;
+        }
+    return t;
+}
+
+}  // namespace
+
+std::vector<uint8_t> render_textured(const std::vector<Point3>& points, const std::vector<double>& uv, const std::vector<uint32_t>& indices,
+                                     Primitive primitive, const std::vector<Point3>& frame_points, const View& view, int width,
+                                     int height) {
+    if (width <= 0 || height <= 0 || width > 8192 || height > 8192)
+        throw RequestError("render: picture size must be between 1 and 8192 pixels");
+    if (uv.size() != 2 * points.size()) throw RequestError("render: texture coordinates must be 2 per vertex");
+    check_indices(points, indices);
+    Context ctx(width, height);
+    load_camera(make_camera(frame_points, view), frame_points, width, height);
+    glClearColor(0, 0, 0, 0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glEnable(GL_DEPTH_TEST);
+    glEnable(GL_CULL_FACE);
+    glFrontFace(GL_CCW);
+    glCullFace(GL_BACK);
+    constexpr int kTex = 64;
+    const std::vector<uint8_t> tex = test_texture(kTex);
+    GLuint name = 0;
+    glGenTextures(1, &name);
+    glBindTexture(GL_TEXTURE_2D, name);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB, kTex, kTex, 0, GL_RGB, GL_UNSIGNED_BYTE, tex.data());
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+    glHint(GL_PERSPECTIVE_CORRECTION_HINT, GL_NICEST);
+    glEnable(GL_TEXTURE_2D);
+    glEnableClientState(GL_VERTEX_ARRAY);
+    glEnableClientState(GL_TEXTURE_COORD_ARRAY);
+    glVertexPointer(3, GL_DOUBLE, 0, points.data());
+    glTexCoordPointer(2, GL_DOUBLE, 0, uv.data());
+    glDrawElements(primitive == Primitive::Triangles ? GL_TRIANGLES : GL_TRIANGLE_STRIP, static_cast<GLsizei>(indices.size()),
+                   GL_UNSIGNED_INT, indices.data());
+    glDisableClientState(GL_TEXTURE_COORD_ARRAY);
+    glDisableClientState(GL_VERTEX_ARRAY);
+    glDeleteTextures(1, &name);
+    return ctx.pixels_top_down();
+}
+
 void write_png(const std::string& path, const Image& img) {
     png_image pi{};
     pi.version = PNG_IMAGE_VERSION;

@@ -90,6 +90,16 @@ enum class Primitive { Triangles, TriangleStrip };
 std::vector<uint8_t> render_coverage(const std::vector<Point3>& points, const std::vector<uint32_t>& indices, Primitive primitive,
                                      const std::vector<Point3>& frame_points, const View& view, int width, int height);
 
+/// Textured test picture: `indices` drawn as GL_TRIANGLES or GL_TRIANGLE_STRIP with texture
+/// coordinates `uv` (2 per point; a TEXCOORD_0 attribute) on a procedural 64x64 texture (red =
+/// u, green = v, blue = an 8x8 checkerboard; repeated, bilinear, perspective-correct), back faces
+/// culled, depth test on. Camera as render_coverage(). Two drawings of the same surface with the
+/// same texture coordinates give the same picture up to rounding in the interpolation; a
+/// midpoint with the wrong texture coordinate shows. Returns width*height*4 RGBA bytes, rows top
+/// to bottom. \throw RequestError for an index out of range or uv.size() != 2 * points.size().
+std::vector<uint8_t> render_textured(const std::vector<Point3>& points, const std::vector<double>& uv, const std::vector<uint32_t>& indices,
+                                     Primitive primitive, const std::vector<Point3>& frame_points, const View& view, int width, int height);
+
 /// Writes `img` as an 8-bit RGBA PNG, atomically. \throw OutputError.
 void write_png(const std::string& path, const Image& img);
 

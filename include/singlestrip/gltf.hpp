@@ -8,9 +8,13 @@
 //   * indices: UNSIGNED_SHORT when every index < 65535 (65535 would be the restart value,
 //     forbidden by the spec), else UNSIGNED_INT;
 //   * POSITION: float32 VEC3 with exact min/max (computed on the float values);
-//   * NORMAL: float32 VEC3, unit, per vertex: area-weighted sum of the normals of the output
-//     faces around it (midpoints lie in their parents' planes, so this equals the input's
+//   * NORMAL: float32 VEC3, unit, per vertex: the strip's NORMAL attribute when it has one
+//     (StripArrays::attributes, renormalised), else the area-weighted sum of the normals of the
+//     output faces around it (midpoints lie in their parents' planes, so this equals the input's
 //     implied normals); vertices without faces, or whose sum vanishes, get (0, 0, 1).
+//   * every other attribute of StripArrays::attributes as a float32 accessor: TEXCOORD_n (2
+//     components), COLOR_n (3 or 4, clamped to [0, 1]), TANGENT (4) under their names; any
+//     other (a PLY property, JOINTS_n, WEIGHTS_n) as a custom "_NAME" accessor (glTF's rule).
 // All vertices are written in order (unreferenced ones included) so the indices are unchanged.
 // Written with tinygltf (Debian libtinygltf-dev); .glb = binary container, .gltf = JSON with the
 // buffer embedded as a base64 data URI. The file is written atomically (temporary + rename).
@@ -40,7 +44,10 @@ void write_gltf_strip(const std::string& path, const StripArrays& a, const std::
 
 /// glTF INPUT for the plain pipeline: the positions and triangles of every primitive in mode
 /// TRIANGLES of every mesh, primitives one after the other (each with its own vertices, in file
-/// order; node transforms are not applied). \throw InputError naming the file when it cannot be
+/// order; node transforms are not applied; faces re-pointed to the first vertex equal in every
+/// attribute, as strip_gltf_file() does, so seams stay apart), and their attributes (decoded to numbers, blend
+/// rule blend_for(), attributes.hpp): a primitive without one gets 0 (COLOR_n: 1, white); an
+/// attribute with different component counts in two primitives is not kept. \throw InputError naming the file when it cannot be
 /// read, an accessor is sparse, compressed or out of bounds, or there is no triangle primitive.
 /// O(file size).
 TriangleSoup read_gltf_soup(const std::string& path);

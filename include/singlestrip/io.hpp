@@ -1,11 +1,16 @@
 // singlestrip — reading meshes, constraint files, and writing results atomically.
 //
 // Input formats (chosen by the file extension, case-insensitive):
-//   .obj  Wavefront OBJ (v / f records; f entries "i", "i/t", "i/t/n", "i//n"; 1-based, negative
-//         = relative; other records are skipped)
+//   .obj  Wavefront OBJ (v / vt / vn / f records; f entries "i", "i/t", "i/t/n", "i//n";
+//         1-based, negative = relative; other records are skipped). Texture coordinates and
+//         normals every corner has become TEXCOORD_0 / NORMAL, vertex colours "v x y z r g b"
+//         COLOR_0 (TriangleSoup::attributes); a position used with several (vt, vn) is one
+//         vertex per combination, the extra ones after the file's vertices (read_obj.cpp)
 //   .off  OFF / COFF / NOFF / CNOFF, ASCII or BINARY (colours and normals checked, not kept)
 //   .ply  PLY, ASCII or binary (little/big endian); faces from `face` and `tristrips` elements;
-//         other properties and elements are skipped
+//         scalar vertex properties become attributes (nx ny nz: NORMAL; red green blue [alpha]:
+//         COLOR_0, integers scaled to [0, 1]; s t, u v, texture_u texture_v: TEXCOORD_0; any
+//         other under its name); list properties and other elements are skipped
 //   .stl  STL, ASCII or binary
 // Each format has one strict parser (src/io/read_<format>.cpp, whose header states its grammar)
 // that reads the bytes once and names the file, the line (text) or element and item (binary),
@@ -121,10 +126,15 @@ OutputFormat output_format_for(const std::string& path);
 
 /// Writes the strip mesh: `points` (input vertices first, unchanged; midpoints after) and `faces`
 /// in the given (strip) order, each with its winding.
-///   .ply: binary_little_endian 1.0; `element vertex` with `property double x y z`; `element face`
-///         with `property list uchar uint vertex_indices` and `property uint parent`.
-///   .obj: "v x y z" lines then "f a b c" (1-based); OBJ has no place for `parent`.
-///   .off: "OFF", counts, vertices, "3 a b c" faces.
+///   .ply: binary_little_endian 1.0; `element vertex` with `property double x y z` and one
+///         property per attribute component (NORMAL: float nx ny nz; TEXCOORD_0: float s t;
+///         COLOR_0: uchar red green blue [alpha]; any other: double <name> or <name>_<c>, int
+///         for AttributeBlend::Nearest); `element face` with `property list uchar uint
+///         vertex_indices` and `property uint parent`.
+///   .obj: "v x y z" lines ("v x y z r g b" with COLOR_0), one "vt u v" per vertex with
+///         TEXCOORD_0, one "vn x y z" per vertex with NORMAL, then "f a/a/a b/b/b c/c/c" (1-based; "a/a", "a//a" or "a" as the
+///         attributes go); OBJ has no place for `parent` or other attributes.
+///   .off: "OFF", counts, vertices, "3 a b c" faces (no attributes).
 ///   .stl: binary STL, one float32 facet per face with its unit normal; STL has no shared
 ///         vertices, no `parent` and float32 coordinates, so `verify` cannot check it.
 /// Text formats write the shortest decimal that round-trips (std::to_chars), so coordinates read
@@ -134,7 +144,7 @@ OutputFormat output_format_for(const std::string& path);
 /// \pre parent.size() == faces.size(), every face index < points.size().
 /// \throw RequestError for an unknown extension (before writing), OutputError on any I/O failure.
 void write_strip_mesh(const std::string& path, const std::vector<Point3>& points, const std::vector<Triangle>& faces,
-                      const std::vector<uint32_t>& parent);
+                      const std::vector<uint32_t>& parent, const std::vector<VertexAttribute>& attributes = {});
 
 /// Writes indices as whitespace-separated decimal text, 16 per line, atomically.
 /// \throw OutputError.

@@ -67,6 +67,11 @@ struct RepairedSoup {
 /// O(V log V).
 std::vector<uint32_t> weld_map(const std::vector<Point3>& points);
 
+/// weld_map() of a soup with attributes: vertices weld only when their attributes are equal
+/// too (a texture or normal seam stays apart). O(V log V) plus O(k^2) for k attribute variants
+/// at one position.
+std::vector<uint32_t> weld_map(const TriangleSoup& soup);
+
 /// Step 1 alone (`--weld`): re-points faces to the weld representatives. Returns how many
 /// referenced vertices were merged away. O(V log V + F).
 uint64_t weld_soup(TriangleSoup& soup);

@@ -57,7 +57,8 @@ std::string report_json(const ReportInput& report);
 /// components, component_sizes, boundary_loops, euler_characteristic, genus (null when not
 /// meaningful), orientable, oriented, faces_flipped_by_orient (when flipped >= 0),
 /// unwelded_vertices, valid, problems [{kind, message}], and repair (repair_json()) when given.
-std::string info_json(const std::string& input, const MeshInfo& info, long long flipped, const RepairReport* repair);
+std::string info_json(const std::string& input, const MeshInfo& info, long long flipped, const RepairReport* repair,
+                      const std::vector<std::string>& attributes = {});
 
 /// `strip --report` of a glTF scene (strip_gltf_file(), gltf_scene.hpp) as pretty-printed JSON:
 /// input, output, primitives [{mesh, primitive, stripped, note, input_triangles,

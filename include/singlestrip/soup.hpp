@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace singlestrip {
@@ -11,12 +12,34 @@ namespace singlestrip {
 using Point3 = std::array<double, 3>;
 using Triangle = std::array<uint32_t, 3>;
 
+/// How a vertex attribute is carried to a new vertex (a split midpoint) inside a face.
+enum class AttributeBlend : uint8_t {
+    Linear,  ///< barycentric average (texture coordinates, colours, plain scalars)
+    Unit,    ///< barycentric average of xyz, renormalised (NORMAL; TANGENT keeps w of the nearest corner)
+    Nearest  ///< copied from the nearest corner (ids, skin joints and their weights)
+};
+
+/// One per-vertex attribute beside the positions. Names follow glTF: NORMAL, TANGENT,
+/// TEXCOORD_n, COLOR_n (RGBA in [0, 1]), JOINTS_n, WEIGHTS_n; any other name is a custom
+/// attribute (a PLY property name, a glTF "_NAME"). `values` holds `components` numbers per
+/// vertex of the soup, vertex after vertex.
+struct VertexAttribute {
+    std::string name;
+    uint32_t components = 1;
+    AttributeBlend blend = AttributeBlend::Linear;
+    std::vector<double> values;
+};
+
 /// Vertices in file order and triangles (indices into `points`), after fan triangulation of
 /// polygons. `source_polygon[t]` is the index of the file polygon triangle t came from.
+/// A vertex is a position plus its attributes: where a file gives one position several
+/// attribute values (an OBJ `vt`/`vn` seam), the soup holds one vertex per combination, so the
+/// seam is an edge between different vertices (a boundary for the strip).
 struct TriangleSoup {
     std::vector<Point3> points;
     std::vector<Triangle> triangles;
-    std::vector<uint32_t> source_polygon;  ///< same size as triangles (may be empty if 1:1)
+    std::vector<uint32_t> source_polygon;     ///< same size as triangles (may be empty if 1:1)
+    std::vector<VertexAttribute> attributes = {};  ///< each with points.size() * components values
 };
 
 /// Output arrays in strip order: faces as vertex triples (orientation kept) and the input
@@ -25,6 +48,9 @@ struct StripArrays {
     std::vector<Point3> points;
     std::vector<Triangle> faces;
     std::vector<uint32_t> parent;
+    /// Per output vertex, when the input had attributes (stripify() fills them, attributes.hpp);
+    /// strip_arrays() leaves them empty.
+    std::vector<VertexAttribute> attributes = {};
 };
 
 /// Where a cycle came from (see the top of this header).
@@ -38,5 +64,12 @@ struct Cycles {
     /// How each cycle was obtained (empty for cycles not made by compute_fundamental_cycles()).
     std::vector<CycleSource> sources;
 };
+
+/// The attribute named `name`, or nullptr.
+inline const VertexAttribute* find_attribute(const std::vector<VertexAttribute>& attrs, const std::string& name) {
+    for (const VertexAttribute& a : attrs)
+        if (a.name == name) return &a;
+    return nullptr;
+}
 
 }  // namespace singlestrip

@@ -117,8 +117,10 @@ struct InputSteps {
 /// with the library's own weld_soup / repair_soup / orient_soup (repair.hpp, validate.hpp) —
 /// this part of the check depends on the library, not on independent code. vi.out_parent
 /// (input face ids) is mapped to the repaired faces (a dropped face maps out of range, which
-/// verify() reports). Returns notes saying what the replay changed. Complexity: repair_soup().
-std::vector<std::string> replay_input_steps(VerifyInput& vi, const InputSteps& steps);
+/// verify() reports). `attributes` are the input's vertex attributes (soup.hpp): the weld keeps
+/// their seams apart, as the strip run did. Returns notes saying what the replay changed.
+/// Complexity: repair_soup().
+std::vector<std::string> replay_input_steps(VerifyInput& vi, const InputSteps& steps, std::vector<VertexAttribute> attributes = {});
 
 /// Optional extra files for verify_files().
 struct VerifyFileOptions {

@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "singlestrip/attributes.hpp"
 #include "singlestrip/errors.hpp"
 #include "singlestrip/validate.hpp"
 #include "union_find.hpp"
@@ -303,6 +304,28 @@ std::string RepairReport::summary() const {
     return s.empty() ? "nothing to repair" : s;
 }
 
+std::vector<uint32_t> weld_map(const TriangleSoup& soup) {
+    std::vector<uint32_t> rep = weld_map(soup.points);
+    if (soup.attributes.empty()) return rep;
+    // Vertices at one position but with different attributes (a texture seam) stay apart: each
+    // joins the lowest-numbered vertex equal to it in everything.
+    auto same = [&](uint32_t a, uint32_t b) {
+        for (const VertexAttribute& at : soup.attributes)
+            for (std::size_t c = 0; c < at.components; ++c)
+                if (at.values[a * at.components + c] != at.values[b * at.components + c]) return false;
+        return true;
+    };
+    std::vector<std::vector<uint32_t>> members(soup.points.size());
+    for (uint32_t v = 0; v < rep.size(); ++v) {
+        auto& group = members[rep[v]];
+        const auto it = std::find_if(group.begin(), group.end(), [&](uint32_t u) { return same(u, v); });
+        const uint32_t to = it == group.end() ? v : *it;
+        if (it == group.end()) group.push_back(v);
+        rep[v] = to;
+    }
+    return rep;
+}
+
 std::vector<uint32_t> weld_map(const std::vector<Point3>& points) {
     std::vector<uint32_t> rep(points.size());
     std::iota(rep.begin(), rep.end(), 0u);
@@ -320,7 +343,7 @@ std::vector<uint32_t> weld_map(const std::vector<Point3>& points) {
 }
 
 uint64_t weld_soup(TriangleSoup& soup) {
-    const std::vector<uint32_t> rep = weld_map(soup.points);
+    const std::vector<uint32_t> rep = weld_map(soup);
     std::vector<char> merged(soup.points.size(), 0);
     uint64_t count = 0;
     for (Triangle& t : soup.triangles)
@@ -352,7 +375,7 @@ RepairedSoup repair_soup(const TriangleSoup& in, const RepairOptions& options) {
     Work w{in.points.size(), in.points, {}, {}, {}, out.report, std::vector<char>(in.points.size(), 0)};
     std::vector<uint32_t> weld(in.points.size());
     std::iota(weld.begin(), weld.end(), 0u);
-    if (options.weld) weld = weld_map(in.points);
+    if (options.weld) weld = weld_map(in);
     keep_faces(in, weld, w);
     w.cut.assign(3 * w.tris.size(), 0);
     w.record_non_manifold_edges();
@@ -364,6 +387,8 @@ RepairedSoup repair_soup(const TriangleSoup& in, const RepairOptions& options) {
     out.soup.points = std::move(w.points);
     out.soup.triangles = std::move(w.tris);
     out.face_origin = std::move(w.origin);
+    out.soup.attributes = in.attributes;
+    append_copies(out.soup.attributes, out.report.copied_from);
     if (!in.source_polygon.empty() && in.source_polygon.size() == in.triangles.size())
         for (uint32_t f : out.face_origin) out.soup.source_polygon.push_back(in.source_polygon[f]);
     // The post-condition is cheap to check next to the repair itself, and a miss is a bug.

@@ -378,7 +378,7 @@ std::vector<uint32_t> face_components(const TriangleSoup& soup, uint32_t* count)
 }
 
 uint64_t unwelded_vertices(const TriangleSoup& soup) {
-    const std::vector<uint32_t> rep = weld_map(soup.points);
+    const std::vector<uint32_t> rep = weld_map(soup);
     std::vector<char> seen(soup.points.size(), 0);
     uint64_t n = 0;
     for (const Triangle& t : soup.triangles)

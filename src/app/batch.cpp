@@ -53,7 +53,7 @@ void write_outputs(const BatchItem& item, const BatchOptions& o, const std::stri
         if (is_gltf_path(item.output))
             write_gltf_strip(item.output, r.arrays, degenerate_joined_indices(r));
         else
-            write_strip_mesh(item.output, r.arrays.points, r.arrays.faces, r.arrays.parent);
+            write_strip_mesh(item.output, r.arrays.points, r.arrays.faces, r.arrays.parent, r.arrays.attributes);
         written.push_back(item.output);
         if (o.write_indices) {
             write_indices(base + ".indices.txt", r.indices);

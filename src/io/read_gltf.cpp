@@ -1,5 +1,6 @@
 // glTF input (.glb / .gltf): the accessor reader shared with the scene rewriter, and
 // read_gltf_soup() for the plain pipeline (info, strip to .ply/.obj/.off, verify).
+#include <algorithm>
 #include <cctype>
 #include <cstring>
 #include <fstream>
@@ -8,6 +9,7 @@
 #include <vector>
 
 #include "gltf_access.hpp"
+#include "singlestrip/attributes.hpp"
 #include "singlestrip/errors.hpp"
 #include "singlestrip/gltf.hpp"
 
@@ -202,22 +204,65 @@ TriangleSoup primitive_soup(const tinygltf::Model& model, const tinygltf::Primit
 
 }  // namespace gltf_detail
 
+namespace {
+
+/// What a primitive without the attribute means: glTF draws a missing COLOR_n as white.
+double absent_value(const std::string& name) {
+    return name.rfind("COLOR_", 0) == 0 ? 1.0 : 0.0;
+}
+
+/// Appends `count` vertices' values of `name` to the soup's attribute of that name (created
+/// with zeros for the vertices before); a primitive without it gets zeros. An attribute whose
+/// component count differs between primitives is marked with components 0 (dropped at the end).
+void append_attribute(TriangleSoup& soup, std::size_t before, std::size_t count, const std::string& name,
+                      const gltf_detail::AccessorData* d) {
+    auto it = std::find_if(soup.attributes.begin(), soup.attributes.end(), [&](const VertexAttribute& a) { return a.name == name; });
+    if (it == soup.attributes.end()) {
+        soup.attributes.push_back(
+            {name, static_cast<uint32_t>(d->components), blend_for(name), std::vector<double>(before * d->components, absent_value(name))});
+        it = soup.attributes.end() - 1;
+    }
+    if (it->components == 0) return;
+    if (d && d->components != static_cast<int>(it->components)) {
+        it->components = 0;
+        return;
+    }
+    if (d)
+        it->values.insert(it->values.end(), d->values.begin(), d->values.end());
+    else
+        it->values.resize(it->values.size() + count * it->components, absent_value(name));
+}
+
+}  // namespace
+
 TriangleSoup read_gltf_soup(const std::string& path) {
     using namespace gltf_detail;
     const tinygltf::Model model = load_model(path);
     TriangleSoup soup;
-    std::vector<std::string> skipped;
     for (std::size_t m = 0; m < model.meshes.size(); ++m)
         for (std::size_t p = 0; p < model.meshes[m].primitives.size(); ++p) {
             const tinygltf::Primitive& prim = model.meshes[m].primitives[p];
             if (!why_not_stripped(model, prim).empty()) continue;
-            const auto base = static_cast<uint32_t>(soup.points.size());
-            const std::vector<Point3> pts = primitive_positions(model, prim, path);
+            const std::size_t base = soup.points.size();
+            // As strip_gltf_file() sees it: vertices equal in every attribute merged, seams apart.
+            const TriangleSoup part = primitive_soup(model, prim, path);
+            const std::vector<Point3>& pts = part.points;
             soup.points.insert(soup.points.end(), pts.begin(), pts.end());
-            for (Triangle t : primitive_triangles(model, prim, pts.size(), path))
-                soup.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+            for (Triangle t : part.triangles)
+                soup.triangles.push_back(
+                    {t[0] + static_cast<uint32_t>(base), t[1] + static_cast<uint32_t>(base), t[2] + static_cast<uint32_t>(base)});
+            for (const auto& [name, index] : prim.attributes)
+                if (name != "POSITION") {
+                    const AccessorData d = read_accessor(model, index, path);
+                    if (d.count == pts.size()) append_attribute(soup, base, pts.size(), name, &d);
+                }
+            for (VertexAttribute& a : soup.attributes)  // attributes this primitive lacks
+                if (a.components && a.values.size() < soup.points.size() * a.components)
+                    append_attribute(soup, base, pts.size(), a.name, nullptr);
         }
     if (soup.triangles.empty()) throw InputError(path + ": no faces (no mesh primitive in mode TRIANGLES (4) with a POSITION attribute)");
+    std::erase_if(soup.attributes,
+                  [&](const VertexAttribute& a) { return a.components == 0 || a.values.size() != soup.points.size() * a.components; });
     return soup;
 }
 

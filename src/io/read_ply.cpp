@@ -16,6 +16,7 @@
 // item numbers of the face element.
 #include "read_ply.hpp"
 
+#include <algorithm>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -59,6 +60,7 @@ private:
     }
     void property(const std::vector<std::string_view>& t);
     void choose_roles();
+    void choose_attributes(Element& e);
 
     const std::string& path_;
     std::string_view d_;
@@ -159,6 +161,7 @@ void HeaderParser::choose_roles() {
                                     "' has type '" + pr->type_text + "' (coordinates must be float or double)");
                 pr->role = roles[k++];
             }
+            if (h_.vertices == e.count) choose_attributes(e);  // several vertex elements: positions only
         } else if (e.name == "face" || e.name == "faces" || e.name == "tristrips") {
             e.kind = e.name == "tristrips" ? Kind::Strips : Kind::Faces;
             auto int_list = [](const Property* pr) { return pr && pr->count != Type::None && is_integral(pr->type); };
@@ -170,8 +173,67 @@ void HeaderParser::choose_roles() {
             list->role = Role::Corners;
         }
     }
+    std::size_t vertex_elements = 0;
+    for (const Element& e : h_.elements) vertex_elements += e.kind == Kind::Vertices;
+    if (vertex_elements > 1) {  // attributes are kept for one vertex element only
+        h_.attributes.clear();
+        h_.slots = 0;
+        for (Element& e : h_.elements)
+            for (Property& pr : e.props)
+                if (pr.role == Role::Attribute) pr.role = Role::Skip;
+    }
     if (h_.vertices >= 0xffffffffull)
         fail(path_, "too many vertices (the header declares " + std::to_string(h_.vertices) + "; at most 2^32-2)");
+}
+
+/// The groups of vertex properties that make one attribute, in the names writers use.
+struct Group {
+    const char* name;
+    AttributeBlend blend;
+    std::vector<std::vector<const char*>> spellings;  // alternatives, each a full list of properties
+};
+
+const std::vector<Group>& groups() {
+    static const std::vector<Group> g{
+        {"NORMAL", AttributeBlend::Unit, {{"nx", "ny", "nz"}}},
+        {"COLOR_0", AttributeBlend::Linear, {{"red", "green", "blue", "alpha"}, {"red", "green", "blue"}}},
+        {"TEXCOORD_0", AttributeBlend::Linear, {{"s", "t"}, {"u", "v"}, {"texture_u", "texture_v"}, {"texture_s", "texture_t"}}},
+    };
+    return g;
+}
+
+/// Every scalar vertex property besides x, y, z becomes (part of) an attribute: normals,
+/// colours (integers scaled to [0, 1]), texture coordinates, and any other scalar under its own
+/// name (integers copied from the nearest corner, not averaged: they may be ids).
+void HeaderParser::choose_attributes(Element& e) {
+    auto scalar = [&](const char* name) -> Property* {
+        for (Property& pr : e.props)
+            if (pr.name == name) return pr.role == Role::Skip && pr.count == Type::None ? &pr : nullptr;
+        return nullptr;
+    };
+    auto add = [&](Property& pr, VertexAttribute& a) {
+        pr.role = Role::Attribute;
+        pr.slot = h_.slots++;
+        if (a.name == "COLOR_0" && pr.type == Type::U8) pr.scale = 1.0 / 255;
+        if (a.name == "COLOR_0" && pr.type == Type::U16) pr.scale = 1.0 / 65535;
+        ++a.components;
+    };
+    for (const Group& g : groups())
+        for (const auto& names : g.spellings) {
+            std::vector<Property*> ps;
+            for (const char* n : names) ps.push_back(scalar(n));
+            if (std::find(ps.begin(), ps.end(), nullptr) != ps.end()) continue;
+            VertexAttribute a{g.name, 0, g.blend, {}};
+            for (Property* pr : ps) add(*pr, a);
+            h_.attributes.push_back(std::move(a));
+            break;
+        }
+    for (Property& pr : e.props)
+        if (pr.role == Role::Skip && pr.count == Type::None) {
+            VertexAttribute a{pr.name, 0, is_integral(pr.type) ? AttributeBlend::Nearest : AttributeBlend::Linear, {}};
+            add(pr, a);
+            h_.attributes.push_back(std::move(a));
+        }
 }
 
 }  // namespace
@@ -207,11 +269,16 @@ TriangleSoup read_ply(const std::string& path, std::string_view d) {
     using namespace ply;
     const Header h = HeaderParser(path, d).run();
     SoupBuilder out(path);
+    out.soup.attributes = h.attributes;
     Sink sink(path, out, h.vertices);
     if (h.format == Format::Ascii)
         read_ascii_body(path, d, h, sink);
     else
         read_binary_body(path, d, h, sink);
+    // A vertex element with list properties gives no attribute rows (its items are skipped).
+    const auto& attrs = out.soup.attributes;
+    if (std::any_of(attrs.begin(), attrs.end(), [&](const auto& a) { return a.values.size() != out.soup.points.size() * a.components; }))
+        out.soup.attributes.clear();
     if (!out.soup.triangles.empty()) return out.finish("");
     // No faces: say which elements there were, so that the user sees what was not understood.
     bool declared = false;

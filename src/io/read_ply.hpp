@@ -41,7 +41,7 @@ inline bool is_signed(Type t) {
 }
 
 /// What the reader does with a property.
-enum class Role : uint8_t { Skip, X, Y, Z, Corners };
+enum class Role : uint8_t { Skip, X, Y, Z, Corners, Attribute };
 
 struct Property {
     std::string name;
@@ -49,6 +49,8 @@ struct Property {
     Type type = Type::None;   // scalar type, or the list's entry type
     Type count = Type::None;  // None: a scalar
     Role role = Role::Skip;
+    std::size_t slot = 0;  // Attribute: its place in the vertex's attribute row
+    double scale = 1;      // Attribute: uchar/ushort colours to [0, 1]
 };
 
 /// What the reader does with an element's items.
@@ -70,6 +72,10 @@ struct Header {
     std::size_t body = 0;             // offset of the first body byte
     std::size_t body_line = 0;        // its line (ASCII messages)
     unsigned long long vertices = 0;  // items of all vertex elements
+    /// Vertex attributes (values empty): from the properties with Role::Attribute, whose slots
+    /// run through the attributes' components in order.
+    std::vector<VertexAttribute> attributes;
+    std::size_t slots = 0;
 };
 
 /// Receives the items the body readers decode.
@@ -91,6 +97,12 @@ public:
     /// A strip's entries, -1 (or the unsigned type's largest value, `restart`) between strips.
     void strip(const long long* v, std::size_t k, long long restart, uint64_t item, const std::string& where);
     [[noreturn]] void bad_index(const std::string& where, const std::string& what, long long index) const;
+    /// One vertex's attribute row (Header::slots values, in slot order).
+    void attributes(const double* row) {
+        std::size_t s = 0;
+        for (VertexAttribute& a : out_.soup.attributes)
+            for (uint32_t c = 0; c < a.components; ++c) a.values.push_back(row[s++]);
+    }
     SoupBuilder& out() { return out_; }
     unsigned long long vertices() const { return vertices_; }
     const std::string& path() const { return path_; }

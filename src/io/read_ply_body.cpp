@@ -49,6 +49,7 @@ private:
     const Header& h_;
     Sink& sink_;
     std::vector<long long> entries_;
+    std::vector<double> row_;
 };
 
 void AsciiBody::element(const Element& e) {
@@ -57,6 +58,7 @@ void AsciiBody::element(const Element& e) {
     // An item holds at least one token of one byte and a separator per property.
     if (e.kind == Kind::Vertices) pts.reserve(pts.size() + fit(left(), 2 * e.props.size(), e.count));
     if (e.kind != Kind::Other) sink_.out().reserve_triangles(fit(left(), 8, e.count));
+    row_.assign(h_.slots, 0.0);
     for (uint64_t i = 0; i < e.count; ++i) {
         Point3 p{};
         for (const Property& pr : e.props) {
@@ -72,8 +74,12 @@ void AsciiBody::element(const Element& e) {
             if (pr.role == Role::X) p[0] = x;
             if (pr.role == Role::Y) p[1] = x;
             if (pr.role == Role::Z) p[2] = x;
+            if (pr.role == Role::Attribute) row_[pr.slot] = (is_integral(pr.type) ? static_cast<double>(n) : x) * pr.scale;
         }
-        if (e.kind == Kind::Vertices) pts.push_back(p);
+        if (e.kind == Kind::Vertices) {
+            pts.push_back(p);
+            if (h_.slots) sink_.attributes(row_.data());
+        }
     }
 }
 
@@ -176,6 +182,7 @@ public:
 private:
     std::size_t left() const { return static_cast<std::size_t>(end_ - p_); }
     void fixed(const Element& e);
+    void attribute_row(const Element& e, const char* item, std::size_t vertex);
     void with_lists(const Element& e);
     bool fast_triangles(const Element& e);
 
@@ -186,6 +193,7 @@ private:
     Sink& sink_;
     bool swap_;
     std::vector<long long> entries_;
+    std::vector<double> row_;
 };
 
 /// Elements of scalars only: one size check, then the coordinates of vertex items.
@@ -219,9 +227,27 @@ void BinaryBody::fixed(const Element& e) {
             }
             if (!std::isfinite(q[0]) || !std::isfinite(q[1]) || !std::isfinite(q[2]))
                 fail(path_, "vertex " + std::to_string(first + i) + " has a non-finite coordinate (NaN or infinity)");
+            if (h_.slots) attribute_row(e, item, first + i);
         }
     }
     p_ += n * record;
+}
+
+/// The attribute properties of one binary vertex item, handed to the sink.
+void BinaryBody::attribute_row(const Element& e, const char* item, std::size_t vertex) {
+    row_.resize(h_.slots);
+    std::size_t at = 0;
+    for (const Property& pr : e.props) {
+        if (pr.role == Role::Attribute) {
+            const double x =
+                is_integral(pr.type) ? static_cast<double>(as_integer(pr.type, item + at, swap_)) : as_real(pr.type, item + at, swap_);
+            if (!std::isfinite(x))
+                fail(path_, "vertex " + std::to_string(vertex) + ": property '" + pr.name + "' is not finite (NaN or infinity)");
+            row_[pr.slot] = x * pr.scale;
+        }
+        at += size_of(pr.type);
+    }
+    sink_.attributes(row_.data());
 }
 
 /// The common face layout (only a uchar-counted list of 32-bit indices), read without the

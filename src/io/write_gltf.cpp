@@ -33,6 +33,53 @@ void append_bytes(std::vector<unsigned char>& buf, const T& v) {
 constexpr int kArrayBuffer = 34962;
 constexpr int kElementArrayBuffer = 34963;
 
+/// The glTF name attribute `a` is written under: its own when it has the components glTF asks
+/// for that name, else a custom "_NAME" (custom names must start with '_'); "" for NORMAL
+/// (written separately) and for what no accessor type holds.
+std::string gltf_name(const VertexAttribute& a) {
+    if (a.name == "NORMAL" || a.components < 1 || a.components > 4) return {};
+    auto starts = [&](const char* p) { return a.name.rfind(p, 0) == 0; };
+    const bool fits =
+        (starts("TEXCOORD_") && a.components == 2) || (starts("COLOR_") && a.components >= 3) || (a.name == "TANGENT" && a.components == 4);
+    if (fits || starts("_")) return a.name;
+    std::string custom = "_" + a.name;
+    for (char& c : custom) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    return custom;
+}
+
+/// Unit normals from a NORMAL attribute (zero or missing ones become (0, 0, 1)).
+std::vector<Point3> attribute_normals(const VertexAttribute& a, std::size_t nv) {
+    std::vector<Point3> n(nv, Point3{0, 0, 1});
+    for (std::size_t v = 0; v < nv && (v + 1) * 3 <= a.values.size(); ++v) {
+        const double* x = &a.values[3 * v];
+        const double len = std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
+        if (len > 0 && std::isfinite(len)) n[v] = {x[0] / len, x[1] / len, x[2] / len};
+    }
+    return n;
+}
+
+/// Appends attribute `a` as a float accessor (colours clamped to [0, 1]) with its own view.
+void add_attribute(tinygltf::Model& model, tinygltf::Primitive& prim, const std::string& name, const VertexAttribute& a) {
+    auto& buf = model.buffers[0].data;
+    while (buf.size() % 4 != 0) buf.push_back(0);
+    tinygltf::BufferView view;
+    view.buffer = 0;
+    view.byteOffset = buf.size();
+    view.target = kArrayBuffer;
+    const bool colour = name.rfind("COLOR_", 0) == 0;
+    for (double x : a.values) append_bytes(buf, static_cast<float>(colour ? std::clamp(x, 0.0, 1.0) : x));
+    view.byteLength = buf.size() - view.byteOffset;
+    model.bufferViews.push_back(view);
+    tinygltf::Accessor acc;
+    acc.bufferView = static_cast<int>(model.bufferViews.size() - 1);
+    acc.componentType = TINYGLTF_COMPONENT_TYPE_FLOAT;
+    acc.count = a.values.size() / a.components;
+    static const int types[] = {TINYGLTF_TYPE_SCALAR, TINYGLTF_TYPE_VEC2, TINYGLTF_TYPE_VEC3, TINYGLTF_TYPE_VEC4};
+    acc.type = types[a.components - 1];
+    model.accessors.push_back(acc);
+    prim.attributes[name] = static_cast<int>(model.accessors.size() - 1);
+}
+
 }  // namespace
 
 bool is_gltf_path(const std::string& path) {
@@ -76,7 +123,8 @@ void write_gltf_strip(const std::string& path, const StripArrays& a, const std::
     }
     const bool short_indices = max_index < 65535u;  // 65535 is the (forbidden) restart value
 
-    const std::vector<Point3> normals = vertex_normals(a.points, a.faces);
+    const VertexAttribute* given = find_attribute(a.attributes, "NORMAL");
+    const std::vector<Point3> normals = given && given->components == 3 ? attribute_normals(*given, nv) : vertex_normals(a.points, a.faces);
 
     std::vector<unsigned char> buf;
     buf.reserve(nv * 24 + strip_indices.size() * 4 + 4);
@@ -156,6 +204,9 @@ void write_gltf_strip(const std::string& path, const StripArrays& a, const std::
     prim.attributes["NORMAL"] = 1;
     prim.indices = 2;
     prim.mode = TINYGLTF_MODE_TRIANGLE_STRIP;
+    for (const VertexAttribute& at : a.attributes)
+        if (const std::string name = gltf_name(at); !name.empty() && at.values.size() == nv * at.components && !prim.attributes.count(name))
+            add_attribute(model, prim, name, at);
     tinygltf::Mesh mesh;
     mesh.name = "strip";
     mesh.primitives.push_back(prim);

@@ -12,7 +12,10 @@
 #include <fstream>
 #include <random>
 #include <string>
+#include <utility>
+#include <vector>
 
+#include "singlestrip/attributes.hpp"
 #include "singlestrip/errors.hpp"
 #include "singlestrip/io.hpp"
 
@@ -93,8 +96,125 @@ OutputFormat output_format_for(const std::string& path) {
     throw RequestError(path + ": unknown output format '" + ext + "' (expected .ply, .obj, .off, .stl, .glb or .gltf)");
 }
 
+namespace {
+
+/// PLY properties of one attribute: (name, type) per component.
+std::vector<std::pair<std::string, const char*>> ply_properties(const VertexAttribute& a) {
+    auto named = [&](std::initializer_list<const char*> names, const char* type) {
+        std::vector<std::pair<std::string, const char*>> p;
+        for (const char* n : names) p.emplace_back(n, type);
+        p.resize(a.components, {"", type});
+        return p;
+    };
+    if (a.name == "NORMAL" && a.components == 3) return named({"nx", "ny", "nz"}, "float");
+    if (a.name == "TEXCOORD_0" && a.components == 2) return named({"s", "t"}, "float");
+    if (a.name == "COLOR_0" && (a.components == 3 || a.components == 4)) return named({"red", "green", "blue", "alpha"}, "uchar");
+    const char* type = a.blend == AttributeBlend::Nearest ? "int" : "double";
+    std::vector<std::pair<std::string, const char*>> p;
+    for (uint32_t c = 0; c < a.components; ++c) p.emplace_back(a.components == 1 ? a.name : a.name + "_" + std::to_string(c), type);
+    return p;
+}
+
+/// One attribute value as its PLY property type.
+void put_ply_value(std::ostream& out, const char* type, double x) {
+    if (type[0] == 'u')
+        put_le<uint8_t>(out, static_cast<uint8_t>(std::lround(std::clamp(x, 0.0, 1.0) * 255)));
+    else if (type[0] == 'f')
+        put_le(out, static_cast<float>(x));
+    else if (type[0] == 'i')
+        put_le(out, static_cast<int32_t>(std::clamp(std::round(x), -2147483648.0, 2147483647.0)));
+    else
+        put_le(out, x);
+}
+
+void write_ply(std::ostream& out, const std::vector<Point3>& points, const std::vector<Triangle>& faces,
+               const std::vector<uint32_t>& parent, const std::vector<VertexAttribute>& attrs) {
+    std::vector<std::vector<std::pair<std::string, const char*>>> props;
+    out << "ply\nformat binary_little_endian 1.0\ncomment singlestrip: faces in strip order; parent = input triangle\n"
+        << "element vertex " << points.size() << "\nproperty double x\nproperty double y\nproperty double z\n";
+    for (const VertexAttribute& a : attrs) {
+        props.push_back(ply_properties(a));
+        for (const auto& [name, type] : props.back()) out << "property " << type << ' ' << name << '\n';
+    }
+    out << "element face " << faces.size() << "\nproperty list uchar uint vertex_indices\nproperty uint parent\nend_header\n";
+    for (std::size_t v = 0; v < points.size(); ++v) {
+        for (double c : points[v]) put_le(out, c);
+        for (std::size_t i = 0; i < attrs.size(); ++i)
+            for (uint32_t c = 0; c < attrs[i].components; ++c)
+                put_ply_value(out, props[i][c].second, attrs[i].values[v * attrs[i].components + c]);
+    }
+    for (std::size_t f = 0; f < faces.size(); ++f) {
+        put_le<uint8_t>(out, 3);
+        for (uint32_t v : faces[f]) put_le(out, v);
+        put_le(out, parent[f]);
+    }
+}
+
+void put_numbers(std::ostream& out, const char* record, const double* x, std::size_t k) {
+    out << record;
+    for (std::size_t i = 0; i < k; ++i) {
+        out << ' ';
+        put_double(out, x[i]);
+    }
+    out << '\n';
+}
+
+/// OBJ holds texture coordinates and normals: one vt / vn per vertex, so every index stream of
+/// a face is the vertex number ("f a/a/a"); colours go after the coordinates ("v x y z r g b").
+void write_obj(std::ostream& out, const std::vector<Point3>& points, const std::vector<Triangle>& faces,
+               const std::vector<VertexAttribute>& attrs) {
+    const VertexAttribute* uv = find_attribute(attrs, "TEXCOORD_0");
+    const VertexAttribute* n = find_attribute(attrs, "NORMAL");
+    if (uv && uv->components != 2) uv = nullptr;
+    if (n && n->components != 3) n = nullptr;
+    out << "# singlestrip: faces in strip order\n";
+    const VertexAttribute* rgb = find_attribute(attrs, "COLOR_0");  // "v x y z r g b", the common extension
+    if (rgb && rgb->components < 3) rgb = nullptr;
+    for (std::size_t v = 0; v < points.size(); ++v) {
+        if (!rgb) {
+            put_numbers(out, "v", points[v].data(), 3);
+            continue;
+        }
+        const double x[6] = {points[v][0],
+                             points[v][1],
+                             points[v][2],
+                             rgb->values[v * rgb->components],
+                             rgb->values[v * rgb->components + 1],
+                             rgb->values[v * rgb->components + 2]};
+        put_numbers(out, "v", x, 6);
+    }
+    if (uv)
+        for (std::size_t v = 0; v < points.size(); ++v) put_numbers(out, "vt", &uv->values[2 * v], 2);
+    if (n)
+        for (std::size_t v = 0; v < points.size(); ++v) put_numbers(out, "vn", &n->values[3 * v], 3);
+    for (const auto& t : faces) {
+        out << 'f';
+        for (uint32_t v : t) {
+            out << ' ' << v + 1ull;
+            if (uv) out << '/' << v + 1ull;
+            if (n) out << (uv ? "/" : "//") << v + 1ull;
+        }
+        out << '\n';
+    }
+}
+
+void write_off(std::ostream& out, const std::vector<Point3>& points, const std::vector<Triangle>& faces) {
+    out << "OFF\n" << points.size() << ' ' << faces.size() << " 0\n";
+    for (const auto& p : points) {
+        put_double(out, p[0]);
+        out << ' ';
+        put_double(out, p[1]);
+        out << ' ';
+        put_double(out, p[2]);
+        out << '\n';
+    }
+    for (const auto& t : faces) out << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
+}
+
+}  // namespace
+
 void write_strip_mesh(const std::string& path, const std::vector<Point3>& points, const std::vector<Triangle>& faces,
-                      const std::vector<uint32_t>& parent) {
+                      const std::vector<uint32_t>& parent, const std::vector<VertexAttribute>& attributes) {
     const OutputFormat fmt = output_format_for(path);
     if (parent.size() != faces.size())
         throw InternalError("write_strip_mesh: " + std::to_string(faces.size()) + " faces but " + std::to_string(parent.size()) +
@@ -104,51 +224,21 @@ void write_strip_mesh(const std::string& path, const std::vector<Point3>& points
             if (v >= points.size())
                 throw InternalError("write_strip_mesh: face " + std::to_string(f) + " references vertex " + std::to_string(v) + " of " +
                                     std::to_string(points.size()));
+    if (const std::string bad = attribute_problem(attributes, points.size()); !bad.empty()) throw InternalError("write_strip_mesh: " + bad);
     write_atomically(path, [&](std::ofstream& out) {
         switch (fmt) {
-            case OutputFormat::Ply: {
-                out << "ply\nformat binary_little_endian 1.0\ncomment singlestrip: faces in strip order; parent = input triangle\n"
-                    << "element vertex " << points.size() << "\nproperty double x\nproperty double y\nproperty double z\n"
-                    << "element face " << faces.size() << "\nproperty list uchar uint vertex_indices\nproperty uint parent\nend_header\n";
-                for (const auto& p : points)
-                    for (double c : p) put_le(out, c);
-                for (std::size_t f = 0; f < faces.size(); ++f) {
-                    put_le<uint8_t>(out, 3);
-                    for (uint32_t v : faces[f]) put_le(out, v);
-                    put_le(out, parent[f]);
-                }
+            case OutputFormat::Ply:
+                write_ply(out, points, faces, parent, attributes);
                 break;
-            }
-            case OutputFormat::Obj: {
-                out << "# singlestrip: faces in strip order\n";
-                for (const auto& p : points) {
-                    out << "v ";
-                    put_double(out, p[0]);
-                    out << ' ';
-                    put_double(out, p[1]);
-                    out << ' ';
-                    put_double(out, p[2]);
-                    out << '\n';
-                }
-                for (const auto& t : faces) out << "f " << t[0] + 1ull << ' ' << t[1] + 1ull << ' ' << t[2] + 1ull << '\n';
+            case OutputFormat::Obj:
+                write_obj(out, points, faces, attributes);
                 break;
-            }
             case OutputFormat::Stl:
                 write_binary_stl(out, points, faces);
                 break;
-            case OutputFormat::Off: {
-                out << "OFF\n" << points.size() << ' ' << faces.size() << " 0\n";
-                for (const auto& p : points) {
-                    put_double(out, p[0]);
-                    out << ' ';
-                    put_double(out, p[1]);
-                    out << ' ';
-                    put_double(out, p[2]);
-                    out << '\n';
-                }
-                for (const auto& t : faces) out << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
+            case OutputFormat::Off:
+                write_off(out, points, faces);
                 break;
-            }
         }
     });
 }

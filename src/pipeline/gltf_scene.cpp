@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "io/gltf_access.hpp"
+#include "singlestrip/attributes.hpp"
 #include "singlestrip/errors.hpp"
 #include "singlestrip/gltf.hpp"
 #include "singlestrip/gltf_scene.hpp"
@@ -23,7 +24,6 @@ namespace singlestrip {
 namespace {
 
 using gltf_detail::AccessorData;
-constexpr uint32_t kNo = 0xffffffffu;
 
 /// The whole model in buffer 0 (views re-pointed), so new data can be appended to one buffer
 /// and a .glb holds everything in its BIN chunk.
@@ -68,45 +68,6 @@ void images_to_buffer(tinygltf::Model& model) {
         }
 }
 
-/// Where an output vertex takes its attributes from: up to three input vertices and weights.
-struct Source {
-    std::array<uint32_t, 3> v{kNo, kNo, kNo};
-    std::array<double, 3> w{1, 0, 0};
-    uint32_t nearest = kNo;
-};
-
-std::array<double, 3> barycentric(const Point3& p, const Point3& a, const Point3& b, const Point3& c) {
-    const Point3 u{b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v{c[0] - a[0], c[1] - a[1], c[2] - a[2]},
-        q{p[0] - a[0], p[1] - a[1], p[2] - a[2]};
-    auto dot = [](const Point3& x, const Point3& y) { return x[0] * y[0] + x[1] * y[1] + x[2] * y[2]; };
-    const double uu = dot(u, u), uv = dot(u, v), vv = dot(v, v), qu = dot(q, u), qv = dot(q, v), det = uu * vv - uv * uv;
-    if (!(std::abs(det) > 0)) return {1, 0, 0};
-    double s = (vv * qu - uv * qv) / det, t = (uu * qv - uv * qu) / det;
-    s = std::clamp(s, 0.0, 1.0);
-    t = std::clamp(t, 0.0, 1.0 - s);
-    return {1 - s - t, s, t};
-}
-
-/// Sources of every output vertex of `r` (n input vertices of the primitive soup `tris`).
-std::vector<Source> vertex_sources(const PipelineResult& r, const std::vector<Triangle>& tris, const std::vector<Point3>& pts) {
-    const std::size_t n = pts.size(), N = r.arrays.points.size();
-    const std::size_t copies = r.repair ? r.repair->copied_from.size() : 0;
-    std::vector<Source> src(N);
-    for (std::size_t v = 0; v < std::min(n, N); ++v) src[v].v[0] = src[v].nearest = static_cast<uint32_t>(v);
-    for (std::size_t j = 0; j < copies && n + j < N; ++j) src[n + j].v[0] = src[n + j].nearest = r.repair->copied_from[j];
-    for (std::size_t f = 0; f < r.arrays.faces.size(); ++f)
-        for (uint32_t v : r.arrays.faces[f]) {
-            if (v < n + copies || src[v].nearest != kNo) continue;
-            const Triangle& t = tris[r.arrays.parent[f]];
-            src[v].v = t;
-            src[v].w = barycentric(r.arrays.points[v], pts[t[0]], pts[t[1]], pts[t[2]]);
-            src[v].nearest = t[static_cast<std::size_t>(std::max_element(src[v].w.begin(), src[v].w.end()) - src[v].w.begin())];
-        }
-    for (Source& s : src)
-        if (s.nearest == kNo) s.v[0] = s.nearest = 0;  // an unreferenced vertex: any value will do
-    return src;
-}
-
 // Skin influences stay paired (nearest corner); custom integer attributes may be ids. Everything
 // else is interpolated and written as float, which every core attribute (and
 // KHR_mesh_quantization's) accepts with the same meaning.
@@ -116,38 +77,45 @@ bool interpolated(const std::string& name, const AccessorData& d) {
     return true;
 }
 
-/// A new accessor for attribute `name` over the output vertices.
-int write_attribute(tinygltf::Model& model, const std::string& name, const AccessorData& d, const std::vector<Source>& src) {
+/// Internal attribute: the primitive vertex each output vertex copies its non-interpolated
+/// attributes from, byte for byte (the Nearest blend of the vertex number).
+const char* const kSourceVertex = "\x01source vertex";
+
+/// The primitive's attributes as the pipeline carries them (attributes.hpp): the interpolated
+/// ones by value, the others through kSourceVertex.
+std::vector<VertexAttribute> soup_attributes(const std::map<std::string, AccessorData>& attrs, std::size_t vertices) {
+    std::vector<VertexAttribute> out;
+    for (const auto& [name, d] : attrs) {
+        if (name == "POSITION" || !interpolated(name, d)) continue;
+        out.push_back({name, static_cast<uint32_t>(d.components), blend_for(name), std::vector<double>(d.values.begin(), d.values.end())});
+    }
+    VertexAttribute source{kSourceVertex, 1, AttributeBlend::Nearest, std::vector<double>(vertices)};
+    for (std::size_t v = 0; v < vertices; ++v) source.values[v] = static_cast<double>(v);
+    out.push_back(std::move(source));
+    return out;
+}
+
+/// A new accessor for one attribute over the output vertices: `carried` blended (written as
+/// float, TANGENT's w included), or the bytes of vertex `source[v]` for what is not interpolated.
+int write_attribute(tinygltf::Model& model, const AccessorData& d, const VertexAttribute* carried, const VertexAttribute& source) {
     tinygltf::Accessor acc;
-    acc.count = src.size();
+    acc.count = source.values.size();
     acc.type = d.type;
     std::vector<unsigned char> bytes;
-    if (!interpolated(name, d)) {
+    if (!carried) {
         acc.componentType = d.component_type;
         acc.normalized = d.normalized;
-        for (const Source& s : src)
-            bytes.insert(bytes.end(), d.raw.begin() + static_cast<std::ptrdiff_t>(s.nearest * d.elem_size),
-                         d.raw.begin() + static_cast<std::ptrdiff_t>((s.nearest + 1) * d.elem_size));
+        for (double x : source.values) {
+            const auto v = static_cast<std::size_t>(x);
+            bytes.insert(bytes.end(), d.raw.begin() + static_cast<std::ptrdiff_t>(v * d.elem_size),
+                         d.raw.begin() + static_cast<std::ptrdiff_t>((v + 1) * d.elem_size));
+        }
     } else {
         acc.componentType = TINYGLTF_COMPONENT_TYPE_FLOAT;
-        const auto k = static_cast<std::size_t>(d.components);
-        std::vector<float> val(k);
-        for (const Source& s : src) {
-            for (std::size_t c = 0; c < k; ++c) {
-                double x = 0;
-                for (int i = 0; i < 3; ++i)
-                    if (s.v[i] != kNo && s.w[i] != 0) x += s.w[i] * d.values[s.v[i] * k + c];
-                val[c] = static_cast<float>(x);
-            }
-            if (name == "NORMAL" || name == "TANGENT") {  // unit vectors stay unit
-                const double len = std::sqrt(double(val[0]) * val[0] + double(val[1]) * val[1] + double(val[2]) * val[2]);
-                for (std::size_t c = 0; c < 3; ++c) val[c] = len > 0 ? static_cast<float>(val[c] / len) : (c == 2 ? 1.0f : 0.0f);
-                if (name == "TANGENT") val[3] = d.values[s.nearest * k + 3];
-            }
-            for (float f : val) {
-                const auto* p = reinterpret_cast<const unsigned char*>(&f);
-                bytes.insert(bytes.end(), p, p + 4);
-            }
+        for (double x : carried->values) {
+            const auto f = static_cast<float>(x);
+            const auto* p = reinterpret_cast<const unsigned char*>(&f);
+            bytes.insert(bytes.end(), p, p + 4);
         }
     }
     acc.bufferView = add_view(model, bytes, TINYGLTF_TARGET_ARRAY_BUFFER);
@@ -203,8 +171,7 @@ GltfPrimitiveResult strip_primitive(tinygltf::Model& model, tinygltf::Primitive&
     std::map<std::string, AccessorData> attrs;
     for (const auto& [attr, index] : prim.attributes) attrs.emplace(attr, gltf_detail::read_accessor(model, index, name));
     TriangleSoup soup = gltf_detail::primitive_soup(model, prim, name, &res.welded);
-    const std::vector<Point3> pts = soup.points;
-    const std::vector<Triangle> tris = soup.triangles;
+    soup.attributes = soup_attributes(attrs, soup.points.size());
     PipelineOptions o = base;
     o.name = name;
     o.weld = false;  // positions alone would weld across attribute seams
@@ -217,9 +184,10 @@ GltfPrimitiveResult strip_primitive(tinygltf::Model& model, tinygltf::Primitive&
     o.strip.target.reset();
     o.strip.seed_face.reset();
     const PipelineResult r = stripify(std::move(soup), o);
-    const std::vector<Source> src = vertex_sources(r, tris, pts);
+    const VertexAttribute& source = *find_attribute(r.arrays.attributes, kSourceVertex);
     for (const auto& [attr, d] : attrs) {
-        prim.attributes[attr] = attr == "POSITION" ? write_positions(model, r.arrays.points) : write_attribute(model, attr, d, src);
+        prim.attributes[attr] = attr == "POSITION" ? write_positions(model, r.arrays.points)
+                                                   : write_attribute(model, d, find_attribute(r.arrays.attributes, attr), source);
         res.attributes.push_back(attr);
     }
     prim.indices = write_indices(model, degenerate_joined_indices(r));

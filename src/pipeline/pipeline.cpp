@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "components.hpp"
+#include "singlestrip/attributes.hpp"
 #include "singlestrip/encode.hpp"
 #include "singlestrip/errors.hpp"
 #include "singlestrip/gltf.hpp"
@@ -123,6 +124,14 @@ void warn_unwelded(PipelineResult& r, uint32_t components) {
                          std::to_string(components) + " components may be one surface; --weld (or --repair) merges them");
 }
 
+/// Output vertices get the input's attributes (midpoints blended inside their parent face);
+/// parents still number the faces of r.input here.
+void carry_attributes(PipelineResult& r) {
+    if (r.input.attributes.empty()) return;
+    const auto src = attribute_sources(r.input.points, r.input.triangles, r.arrays.points, r.arrays.faces, r.arrays.parent);
+    for (const VertexAttribute& a : r.input.attributes) r.arrays.attributes.push_back(blend_attribute(a, src));
+}
+
 void map_parents(PipelineResult& r) {
     if (r.face_origin.empty()) return;
     for (uint32_t& p : r.arrays.parent) p = r.face_origin[p];
@@ -164,6 +173,8 @@ PipelineResult stripify(TriangleSoup soup, const PipelineOptions& options, Pipel
     PipelineResult r;
     r.options = options;
     enter(stage, PipelineStage::Checks);
+    if (const std::string bad = attribute_problem(soup.attributes, soup.points.size()); !bad.empty())
+        throw InputError(options.name + ": " + bad);
     soup = pre_repair(std::move(soup), options, r);
     r.input = prepare_soup(std::move(soup), PrepareOptions{options.orient || options.repair}, options.name);
     if (options.constraints_file) {
@@ -178,6 +189,7 @@ PipelineResult stripify(TriangleSoup soup, const PipelineOptions& options, Pipel
         strip_one(r, options.self_check, stage);
     else
         detail::strip_components(r, comp, count, stage);
+    carry_attributes(r);
     map_parents(r);
     r.seconds.strip = clock.lap();
     enter(stage, PipelineStage::Done);

@@ -130,7 +130,8 @@ std::string report_json(const ReportInput& in) {
     return j.dump(2) + "\n";
 }
 
-std::string info_json(const std::string& input, const MeshInfo& m, long long flipped, const RepairReport* repair) {
+std::string info_json(const std::string& input, const MeshInfo& m, long long flipped, const RepairReport* repair,
+                      const std::vector<std::string>& attributes) {
     json j;
     j["file"] = input;
     j["vertices"] = m.vertices;
@@ -153,6 +154,7 @@ std::string info_json(const std::string& input, const MeshInfo& m, long long fli
     json ps = json::array();
     for (const auto& p : m.problems) ps.push_back({{"kind", p.kind}, {"message", p.message}});
     j["problems"] = ps;
+    j["attributes"] = attributes;
     if (repair) j["repair"] = repair_json_value(*repair);
     return j.dump(2) + "\n";
 }

@@ -19,11 +19,12 @@ constexpr uint32_t kNo = 0xffffffffu;
 
 }  // namespace
 
-std::vector<std::string> replay_input_steps(VerifyInput& vi, const InputSteps& steps) {
+std::vector<std::string> replay_input_steps(VerifyInput& vi, const InputSteps& steps, std::vector<VertexAttribute> attributes) {
     std::vector<std::string> notes;
     TriangleSoup input;
     input.points = std::move(vi.in_points);
     input.triangles = std::move(vi.in_faces);
+    input.attributes = std::move(attributes);
     std::vector<uint32_t> face_of_input;
     if (steps.repair) {
         RepairedSoup rs = repair_soup(input, RepairOptions{steps.repair_weld});
@@ -87,7 +88,7 @@ VerifyReport verify_files(TriangleSoup input, const std::string& out_path, const
         vi.out_faces = std::move(om.faces);
         vi.out_parent = std::move(om.parent);
     }
-    const std::vector<std::string> notes = replay_input_steps(vi, options.steps);
+    const std::vector<std::string> notes = replay_input_steps(vi, options.steps, std::move(input.attributes));
     if (options.indices_path) vi.indices = read_index_file(*options.indices_path);
     if (options.constraints_path)
         vi.constraints =
