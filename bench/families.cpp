@@ -4,8 +4,8 @@
 #include <cmath>
 #include <utility>
 
-#include "many_centres.hpp"
 #include "fixtures.hpp"
+#include "many_centres.hpp"
 #include "scaling.hpp"
 
 namespace singlestrip::bench {

@@ -269,7 +269,8 @@ double write_outputs(const StripArgs& a, const ss::PipelineResult& r, OutputSet&
     if (a.indices) write_one(outputs, *a.indices, "txt", [&](const std::string& p) { ss::write_indices(p, r.indices); });
     if (r.cycles && a.cycles) write_one(outputs, *a.cycles, "json", [&](const std::string& p) { ss::write_cycles_json(p, *r.cycles); });
     if (r.cycles && a.cycles_obj)
-        write_one(outputs, *a.cycles_obj, "obj", [&](const std::string& p) { ss::write_cycles_obj(p, ss::cycle_polylines(r.arrays, *r.cycles)); });
+        write_one(outputs, *a.cycles_obj, "obj",
+                  [&](const std::string& p) { ss::write_cycles_obj(p, ss::cycle_polylines(r.arrays, *r.cycles)); });
     if (a.path) {
         const ss::Route route = ss::strip_route(r.arrays);
         write_one(outputs, *a.path, a.path_format.empty() ? "csv" : a.path_format,

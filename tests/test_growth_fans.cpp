@@ -6,8 +6,8 @@
 #include <utility>
 #include <vector>
 
-#include "many_centres.hpp"
 #include "fixtures.hpp"
+#include "many_centres.hpp"
 #include "singlestrip/strip.hpp"
 #include "strip_check.hpp"
 

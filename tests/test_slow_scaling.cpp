@@ -9,8 +9,8 @@
 #include <cstdio>
 #include <string>
 
-#include "many_centres.hpp"
 #include "fixtures.hpp"
+#include "many_centres.hpp"
 #include "singlestrip/strip.hpp"
 #include "strip_check.hpp"
 

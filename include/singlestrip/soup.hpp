@@ -38,7 +38,7 @@ struct VertexAttribute {
 struct TriangleSoup {
     std::vector<Point3> points;
     std::vector<Triangle> triangles;
-    std::vector<uint32_t> source_polygon;     ///< same size as triangles (may be empty if 1:1)
+    std::vector<uint32_t> source_polygon;          ///< same size as triangles (may be empty if 1:1)
     std::vector<VertexAttribute> attributes = {};  ///< each with points.size() * components values
 };
 

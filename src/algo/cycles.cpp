@@ -429,7 +429,9 @@ std::vector<std::vector<Point3>> cycle_polylines(const StripArrays& arrays, cons
     out.reserve(cycles.cycles.size());
     for (const auto& cycle : cycles.cycles) {
         for (const uint32_t f : cycle)
-            if (f >= arrays.faces.size()) throw RequestError("cycle face " + std::to_string(f) + " is out of range (" + std::to_string(arrays.faces.size()) + " faces)");
+            if (f >= arrays.faces.size())
+                throw RequestError("cycle face " + std::to_string(f) + " is out of range (" + std::to_string(arrays.faces.size()) +
+                                   " faces)");
         out.push_back(cycle_polyline(arrays, cycle));
     }
     return out;

@@ -10,10 +10,10 @@
 #include <utility>
 #include <vector>
 
+#include "core/soup_edges.hpp"
 #include "singlestrip/errors.hpp"
 #include "singlestrip/mesh.hpp"
 #include "singlestrip/repair.hpp"
-#include "core/soup_edges.hpp"
 
 namespace singlestrip {
 namespace {

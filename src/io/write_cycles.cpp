@@ -8,9 +8,9 @@
 #include <utility>
 #include <vector>
 
-#include "singlestrip/soup.hpp"
 #include "singlestrip/errors.hpp"
 #include "singlestrip/io.hpp"
+#include "singlestrip/soup.hpp"
 
 namespace singlestrip {
 

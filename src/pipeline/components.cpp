@@ -8,10 +8,10 @@
 #include <utility>
 #include <vector>
 
+#include "core/soup_edges.hpp"
 #include "singlestrip/encode.hpp"
 #include "singlestrip/errors.hpp"
 #include "singlestrip/mesh.hpp"
-#include "core/soup_edges.hpp"
 
 namespace singlestrip::detail {
 namespace {
