@@ -301,6 +301,11 @@ EngineRun measure_engine(const Spec& spec, ss::StripEngine engine, const std::st
             t = Clock::now();
             ss::Mesh mesh = ss::Mesh::from_soup(soup);
             ta.push_back(seconds_since(t));
+            if (const uint32_t parts = mesh.num_components(); parts > 1) {  // timed here as one strip
+                r.status = 1;
+                set_message(r, std::to_string(parts) + " edge-connected components (the bench times one strip; stripify() strips each)");
+                return r;
+            }
             // The mesh holds its own copy of everything: drop the soup, as a memory-aware caller would.
             soup = ss::TriangleSoup{};
             t = Clock::now();

@@ -173,6 +173,18 @@ TEST_P(Strip, SplitsStayBelowThePapersOnSyntheticDisks) {
     EXPECT_LT(c.arrays.faces.size(), 1.285 * 3200);
 }
 
+TEST_P(Strip, SeveralComponentsAreARequestError) {
+    TriangleSoup soup;
+    soup.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {5, 0, 0}, {6, 0, 0}, {5, 1, 0}};
+    soup.triangles = {{0, 1, 2}, {3, 4, 5}};
+    try {
+        build_strip(Mesh::from_soup(soup), opts());
+        FAIL() << "two components were stripped as one";
+    } catch (const RequestError& e) {
+        EXPECT_NE(std::string(e.what()).find("2 edge-connected components"), std::string::npos) << e.what();
+    }
+}
+
 TEST_P(Strip, BadSeedFaceIsARequestError) {
     StripOptions o = opts();
     o.seed_face = FaceId(99);

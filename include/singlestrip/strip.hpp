@@ -92,8 +92,8 @@ struct StripResult {
     StripStats stats;
 };
 
-/// Builds one strip. \pre mesh is edge-connected (num_components() == 1 through edges that are
-/// not constraints) and valid. \throw RequestError for an out-of-range seed face, source or
+/// Builds one strip. \pre mesh is valid. \throw RequestError for a mesh of several
+/// edge-connected components (stripify() strips each), an out-of-range seed face, source or
 /// target, a constraint pair that is not a mesh edge, or constraints that disconnect the
 /// surface (message gives the pieces); InternalError on a broken invariant (bug).
 /// Runs options.engine. Complexity: growth O(F log F) plus O(F) per fundamental triangle search;

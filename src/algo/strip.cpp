@@ -1089,6 +1089,10 @@ StripResult build_strip_growth(Mesh mesh, const StripOptions& options) {
 }
 
 StripResult build_strip(Mesh mesh, const StripOptions& options) {
+    // One strip covers one edge-connected piece; the engines' invariants assume it.
+    if (const uint32_t parts = mesh.num_components(); parts > 1)
+        throw RequestError("the mesh has " + std::to_string(parts) +
+                           " edge-connected components; build_strip() strips one (stripify() strips each)");
     return options.engine == StripEngine::Growth ? build_strip_growth(std::move(mesh), options)
                                                  : build_strip_matching(std::move(mesh), options);
 }
