@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "matching_builder.hpp"
@@ -337,10 +338,14 @@ StripResult MatchingBuilder::grow(Mesh mesh, uint32_t splits) const {
     }
 }
 
-// Keeps in `r` the better strip: fewer triangles, then fewer swaps (GL indices).
+// What makes one strip better than another: fewer triangles, then fewer swaps (GL indices).
+static std::pair<uint32_t, uint32_t> cost(const StripResult& x) {
+    return {x.stats.output_triangles, x.stats.swaps};
+}
+
+// Keeps in `r` the better strip (cost()).
 void MatchingBuilder::keep_better(StripResult& r, StripResult alt) const {
     if (alt.order.empty() || alt.stats.splits > stats_.input_triangles) return;
-    const auto cost = [](const StripResult& x) { return std::pair(x.stats.output_triangles, x.stats.swaps); };
     if (r.order.empty() || cost(alt) < cost(r)) r = std::move(alt);
 }
 
@@ -383,7 +388,6 @@ StripResult MatchingBuilder::finish_or_grow(std::vector<uint32_t> order) {
     StripResult r = finish(std::move(order));
     StripResult g = grow(std::move(original), 0);
     if (g.order.empty()) return r;
-    const auto cost = [](const StripResult& x) { return std::pair(x.stats.output_triangles, x.stats.swaps); };
     return cost(g) < cost(r) ? as_fallback(std::move(g)) : r;
 }
 
