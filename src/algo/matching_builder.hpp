@@ -43,6 +43,7 @@ private:
     std::vector<Triangle> input_faces_;  ///< the input, to rebuild it if the split budget runs out
     std::optional<Mesh> pre_merge_;      ///< the mesh before the joins, kept when paths remain
     uint32_t pre_merge_splits_ = 0;
+    bool chain_splits_ = false;  ///< split_along_chains() split something
     // Augmenting search, per face: the outer face it was reached from and the two edges used.
     std::vector<uint32_t> aug_prev_, aug_matched_, aug_unmatched_, aug_queue_;
 
@@ -95,6 +96,10 @@ private:
     void check_matching() const;
     void repair_short(std::vector<uint32_t>& short_faces);
     bool split_beside(uint32_t u);
+    void requota(const SplitResult& sr);
+    [[nodiscard]] uint32_t chain_end(uint32_t u, uint32_t h, uint32_t& faces) const;
+    void split_chain(uint32_t h, uint32_t faces);
+    bool split_along_chains(const std::vector<uint32_t>& short_faces);
     bool repair_in_balls(std::vector<uint32_t>& short_faces, size_t ball);
     bool repair_ball(const std::vector<uint32_t>& short_faces, size_t ball, std::vector<uint8_t>* whole = nullptr);
     static constexpr size_t kBallOneByOne = 8192;
