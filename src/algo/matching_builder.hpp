@@ -1,6 +1,7 @@
 // singlestrip — the matching engine's builder, shared by its source files (private header):
 //   strip_matching.cpp  pins, ear and bridge splits, the patterned matching, run() and the fallback;
 //   matching_repair.cpp faces left short: augmenting paths, Edmonds in balls, splits beside them;
+//   matching_chains.cpp short faces at the junctions of forced chains: the chains split;
 //   matching_joins.cpp  loops and paths labelled, alternating-cycle flips, the joins;
 //   matching_absorb.cpp loops taken into one growing path by end rotations.
 // The method and why it ends in one strip: docs/algorithm.md, "The matching engine".
@@ -97,8 +98,17 @@ private:
     void repair_short(std::vector<uint32_t>& short_faces);
     bool split_beside(uint32_t u);
     void requota(const SplitResult& sr);
-    [[nodiscard]] uint32_t chain_end(uint32_t u, uint32_t h, uint32_t& faces) const;
-    void split_chain(uint32_t h, uint32_t faces);
+    [[nodiscard]] uint32_t chain_end(uint32_t h, uint32_t& faces) const;
+    void split_chain(uint32_t h, uint32_t faces, std::vector<uint32_t>* wanting);
+    struct ChainStep {
+        uint32_t prev, h, faces, y;  ///< prev: the step that reached the face h leaves (kNone: the root)
+    };
+    bool augment_through_chains(uint32_t u, size_t budget);
+    bool augment_all_through_chains(const std::vector<uint32_t>& short_faces);
+    [[nodiscard]] uint32_t mate_of(uint32_t y) const;
+    void apply_chain_path(const std::vector<ChainStep>& steps, uint32_t last);
+    std::vector<uint32_t> ch_stamp_;
+    uint32_t ch_mark_ = 0;
     bool split_along_chains(const std::vector<uint32_t>& short_faces);
     bool repair_in_balls(std::vector<uint32_t>& short_faces, size_t ball);
     bool repair_ball(const std::vector<uint32_t>& short_faces, size_t ball, std::vector<uint8_t>* whole = nullptr);

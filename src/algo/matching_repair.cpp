@@ -239,74 +239,6 @@ void MatchingBuilder::requota(const SplitResult& sr) {
     }
 }
 
-// From short face u across h, over faces with two passable edges (a forced chain), to the first
-// other face. Returns that face if it is short and not u, else kNone; `faces` counts the chain.
-uint32_t MatchingBuilder::chain_end(uint32_t u, uint32_t h, uint32_t& faces) const {
-    faces = 0;
-    for (uint32_t g = across(h); faces <= mesh_.num_faces(); g = across(h), ++faces) {
-        if (degree(g) != 2 || vlink_[g]) return (g != u && quota_[g] > 0 && !vlink_[g]) ? g : kNone;
-        const uint32_t in = twin_of(h);
-        for (uint32_t e = 3 * g; e < 3 * g + 3; ++e)
-            if (e != in && passable(e)) h = e;
-    }
-    return kNone;
-}
-
-// Splits every edge of the chain from short face u across h but the last. Each split moves the
-// missing matched edge one face along: the two children of the face being left pair up across
-// their sibling edge, the child holding the next chain edge wants one, and the last of them meets
-// the short face at the far end. +2 triangles per chain face. (Splitting every other edge also
-// gives a perfect matching, but each split leaves a ring of four whose two exits are matched: a
-// loop of its own, and its join costs the split saved.)
-void MatchingBuilder::split_chain(uint32_t h, uint32_t faces) {
-    for (uint32_t i = 0; i < faces; ++i) {
-        const uint32_t g = across(h), in = twin_of(h);
-        uint32_t next = kNone;
-        for (uint32_t e = 3 * g; e < 3 * g + 3; ++e)
-            if (e != in && passable(e)) next = across(e);
-        const SplitResult sr = split(h);
-        requota(sr);
-        for (uint32_t c : {sr.g_a.idx(), sr.g_b.idx()})
-            for (uint32_t e = 3 * c; e < 3 * c + 3; ++e)
-                if (passable(e) && across(e) == next) h = e;
-    }
-}
-
-// Faces still short whose neighbours start forced chains (junctions of one-face-wide
-// corridors: no 2-factor, and no split beside one face helps, by parity) are paired along the
-// shortest chains first, and each pair's chain is split (split_chain). False if none paired.
-bool MatchingBuilder::split_along_chains(const std::vector<uint32_t>& short_faces) {
-    struct Candidate {
-        uint32_t faces, u, w, h;
-    };
-    std::vector<Candidate> found;
-    for (uint32_t u : short_faces) {
-        if (quota_[u] == 0 || vlink_[u]) continue;
-        for (uint32_t h = 3 * u; h < 3 * u + 3; ++h) {
-            if (!passable(h) || matched_[h]) continue;
-            uint32_t faces = 0;
-            const uint32_t w = chain_end(u, h, faces);
-            if (w != kNone && faces > 0 && u < w) found.push_back({faces, u, w, h});
-        }
-    }
-    std::stable_sort(found.begin(), found.end(), [](const Candidate& a, const Candidate& b) { return a.faces < b.faces; });
-    std::vector<uint8_t> paired(mesh_.num_faces(), 0);
-    std::vector<Candidate> chosen;
-    for (const Candidate& c : found) {
-        if (paired[c.u] || paired[c.w]) continue;
-        paired[c.u] = paired[c.w] = 1;
-        chosen.push_back(c);
-    }
-    // Two faces left short become the strip's two ends (settle_leftovers()): without pins, the
-    // longest chain is left unsplit when it would pair the last two.
-    size_t left = 0;
-    for (uint32_t u : short_faces) left += quota_[u] > 0 && !paired[u];
-    if (left == 0 && num_pins_ == 0 && !chosen.empty()) chosen.pop_back();
-    // Only chain faces and the near end are split, so the other chosen chains stay as found.
-    for (const Candidate& c : chosen) split_chain(c.h, c.faces);
-    return !chosen.empty();
-}
-
 void MatchingBuilder::settle_leftovers() {
     std::vector<uint32_t> short_faces;
     auto collect = [&] {
@@ -324,8 +256,14 @@ void MatchingBuilder::settle_leftovers() {
     if (chain_splits_) {
         collect();
         repair_short(short_faces);
-        stats_.parity_splits += 1;
     }
+    // Then alternating paths whose steps may run along forced chains (split), leaving two.
+    if (short_faces.size() > (num_pins_ == 0 ? 2 : 0) && augment_all_through_chains(short_faces)) {
+        chain_splits_ = true;
+        collect();
+        repair_short(short_faces);
+    }
+    if (chain_splits_) stats_.parity_splits += 1;
     // Still short: the matching is maximum there; splits beside short faces, while they help.
     for (uint32_t round = 0; round < 4 && !short_faces.empty(); ++round) {
         const size_t before = short_faces.size();
