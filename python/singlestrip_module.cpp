@@ -377,16 +377,23 @@ py::dict strip(const py::object& vertices, const py::object& faces, const py::ob
 }
 
 py::dict verify(const py::object& vertices, const py::object& faces, const py::dict& result, const py::object& constraints,
-                const py::object& source, const py::object& target, bool repair, bool weld, bool orient) {
+                const py::object& source, const py::object& target, bool repair, bool weld, bool orient, const py::object& attributes,
+                const py::object& blend) {
     ss::VerifyInput in;
     in.in_points = to_points(vertices, "vertices");
     in.in_faces = to_faces(faces, in.in_points.size(), "faces");
+    std::vector<ss::VertexAttribute> in_attributes = to_attributes(attributes, blend, in.in_points.size());
     if (!result.contains("vertices") || !result.contains("faces"))
         throw py::value_error("result must be a dict with 'vertices' and 'faces' (as returned by singlestrip.strip)");
     in.out_points = to_points(result["vertices"], "result['vertices']");
     in.out_faces = to_faces(result["faces"], in.out_points.size(), "result['faces']");
     if (result.contains("parent") && !result["parent"].is_none())
         in.out_parent = py::cast<std::vector<uint32_t>>(py::array_t<uint32_t, py::array::forcecast>::ensure(result["parent"]));
+    if (result.contains("attributes") && !result["attributes"].is_none()) {
+        // Float64 arrays: the verifier's double tolerance (1e-9 absolute + relative).
+        for (ss::VertexAttribute& a : to_attributes(result["attributes"], py::none(), in.out_points.size()))
+            in.out_attributes.push_back({a.name, a.components, std::move(a.values)});
+    }
     if (result.contains("strip") && !result["strip"].is_none())
         in.indices = py::cast<std::vector<uint32_t>>(py::array_t<uint32_t, py::array::forcecast>::ensure(result["strip"]));
     if (result.contains("cycles") && !result["cycles"].is_none()) {
@@ -404,7 +411,7 @@ py::dict verify(const py::object& vertices, const py::object& faces, const py::d
     ss::VerifyReport rep;
     {
         py::gil_scoped_release release;
-        const std::vector<std::string> notes = ss::replay_input_steps(in, {weld, repair, orient});
+        const std::vector<std::string> notes = ss::replay_input_steps(in, {weld, repair, orient}, std::move(in_attributes));
         rep = ss::verify(in);
         rep.notes.insert(rep.notes.begin(), notes.begin(), notes.end());
     }
@@ -465,11 +472,14 @@ Raises ValueError for invalid input, an impossible request or an unknown engine 
 as the CLI).)doc");
     m.def("verify", &verify, py::arg("vertices"), py::arg("faces"), py::arg("result"), py::arg("constraints") = py::none(),
           py::arg("source") = py::none(), py::arg("target") = py::none(), py::arg("repair") = false, py::arg("weld") = false,
-          py::arg("orient") = false,
+          py::arg("orient") = false, py::arg("attributes") = py::none(), py::arg("blend") = py::none(),
           R"doc(Independently check `result` (a dict as returned by strip(): vertices, faces, optional parent,
 strip, cycles) against the input mesh. Returns a dict with ok (bool), failures, notes, counts and
 text (the CLI's `verify` output). repair/weld/orient: `result` was made with them; the input is
-replayed through the library's repair first (a note says what it changed).)doc");
+replayed through the library's repair first (a note says what it changed).
+attributes, blend: the input's vertex attributes, as given to strip(); with result["attributes"]
+every output vertex's values are checked (input vertices unchanged, midpoints interpolated in
+their parent face; a failure names the vertex, the attribute and both values).)doc");
     m.def(
         "decode_strip",
         [](const py::object& indices) {

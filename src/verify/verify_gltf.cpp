@@ -12,6 +12,31 @@
 namespace singlestrip {
 namespace {
 
+/// How the scene rewriter carries glTF attribute `name` (docs: skin influences and integer
+/// custom attributes are copied from one corner; normals and tangents renormalised).
+AttributeBlend gltf_blend(const std::string& name, const gltf_detail::AccessorData& d) {
+    if (name == "NORMAL" || name == "TANGENT") return AttributeBlend::Unit;
+    if (name.rfind("JOINTS_", 0) == 0 || name.rfind("WEIGHTS_", 0) == 0) return AttributeBlend::Nearest;
+    if (name.rfind('_', 0) == 0 && d.component_type != TINYGLTF_COMPONENT_TYPE_FLOAT && !d.normalized) return AttributeBlend::Nearest;
+    return AttributeBlend::Linear;
+}
+
+/// The attributes both primitives have, as verify() compares them: float32 values (glTF).
+std::vector<VertexAttribute> shared_attributes(const tinygltf::Model& in, const tinygltf::Primitive& ip, const tinygltf::Model& out,
+                                               const tinygltf::Primitive& op, VerifyInput& vi, const std::string& name) {
+    std::vector<VertexAttribute> in_attrs;
+    for (const auto& [attr, index] : ip.attributes) {
+        if (attr == "POSITION" || !op.attributes.count(attr)) continue;
+        const gltf_detail::AccessorData a = gltf_detail::read_accessor(in, index, name);
+        const gltf_detail::AccessorData b = gltf_detail::read_accessor(out, op.attributes.at(attr), name);
+        const auto k = static_cast<uint32_t>(a.components);
+        in_attrs.push_back({attr, k, gltf_blend(attr, a), std::vector<double>(a.values.begin(), a.values.end())});
+        vi.out_attributes.push_back({attr, static_cast<uint32_t>(b.components), std::vector<double>(b.values.begin(), b.values.end()), 1e-6,
+                                     1e-6, "glTF, float32 tolerance"});
+    }
+    return in_attrs;
+}
+
 /// verify() of one stripped primitive; fills `vi` from the two models.
 VerifyReport verify_primitive(const tinygltf::Model& in, const tinygltf::Primitive& ip, const tinygltf::Model& out,
                               const tinygltf::Primitive& op, const InputSteps& steps, const std::string& name) {
@@ -31,7 +56,8 @@ VerifyReport verify_primitive(const tinygltf::Model& in, const tinygltf::Primiti
     InputSteps s = steps;
     s.repair_weld = false;  // glTF primitives are never welded across attribute seams
     s.weld = false;
-    const std::vector<std::string> notes = replay_input_steps(vi, s);
+    std::vector<VertexAttribute> in_attrs = shared_attributes(in, ip, out, op, vi, name);
+    const std::vector<std::string> notes = replay_input_steps(vi, s, std::move(in_attrs));
     VerifyReport r = verify(vi);
     r.notes.insert(r.notes.begin(), notes.begin(), notes.end());
     return r;

@@ -432,3 +432,18 @@ def test_bad_attributes_are_refused_with_a_clear_message():
         ss.strip(v, f, attributes={"q": np.zeros(n)}, blend={"q": 1})
     with pytest.raises(ValueError, match="blend names 'w', which is not in attributes"):
         ss.strip(v, f, attributes={"q": np.zeros(n)}, blend={"w": "linear"})
+
+
+def test_verify_checks_the_attribute_values():
+    v, f = grid(5)
+    attrs = grid_attributes(v)
+    blend = {"part": "nearest"}
+    r = ss.strip(v, f, attributes=attrs, blend=blend)
+    check = ss.verify(v, f, r, attributes=attrs, blend=blend)
+    assert check["ok"], check["text"]
+    assert any("attributes checked at every output vertex: TEXCOORD_0" in n for n in check["notes"])
+    w = len(v)  # the first midpoint
+    r["attributes"]["TEXCOORD_0"][w] += 0.01
+    bad = ss.verify(v, f, r, attributes=attrs, blend=blend)
+    assert not bad["ok"]
+    assert any(x.startswith(f"attributes: vertex {w} TEXCOORD_0 = (") and "expected" in x for x in bad["failures"]), bad["failures"]
