@@ -4,13 +4,16 @@
 //                     seed_face=None, greedy=True, orient=False, name="input",
 //                     engine="matching", repair=False, weld=False, join="degenerate",
 //                     attributes=None, blend=None) -> dict
-//   singlestrip.verify(vertices, faces, result, constraints=None, source=None, target=None) -> dict
+//   singlestrip.verify(vertices, faces, result, constraints=None, source=None, target=None,
+//                      repair=False, weld=False, orient=False, attributes=None, blend=None) -> dict
 //   singlestrip.decode_strip(indices) -> (T, 3) uint32 array
 //   singlestrip.read(path, format=None, attributes=False) -> (V (n, 3) float64, F (m, 3) uint32)
 //       or, with attributes=True, dict(vertices, faces, attributes, blend) (strip()'s arguments)
 //
 // Arrays in are checked for shape and kind before any conversion: vertices must be real numbers,
-// faces integers (a float face array is refused, never truncated), both of shape (k, 3).
+// faces integers (a float face array is refused, never truncated), both of shape (k, 3);
+// attributes a dict of real (n,) or (n, k) arrays (TypeError for the wrong kinds, ValueError for
+// the wrong row count or a NaN). Midpoint attributes are the library's (stripify()), not Python's.
 // strip() runs the CLI's pipeline (stripify(), pipeline.hpp: the same checks and messages,
 // prefixed by `name` where the CLI has the file name) and its report (report.hpp). Every
 // singlestrip::InputError / RequestError becomes ValueError, an InternalError RuntimeError.

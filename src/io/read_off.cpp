@@ -157,7 +157,8 @@ TriangleSoup OffReader::run() {
     const bool dimensional = j < kw.size() && kw[j] == 'n';
     j += dimensional;
     v_.keyword = kw;
-    if (kw.substr(j) != "OFF") fail(path_, "not an OFF file (it starts with " + quoted(kw) + ", not OFF, COFF, NOFF or CNOFF)");
+    if (kw.substr(j) != "OFF")
+        fail(path_, "not an OFF file (it starts with " + quoted(kw) + ", not OFF or one of its [ST][C][N]OFF variants)");
     if (homogeneous || dimensional)
         fail(path_, "unsupported OFF variant '" + kw + "' (homogeneous or n-dimensional coordinates); [ST][C][N]OFF is read");
     skip_comments();
