@@ -535,7 +535,10 @@ TEST(VerifyAttributes, RealOutputsPassAndSayWhatWasChecked) {
         const char* checked;
     } cases[] = {{"o.ply", "NORMAL (float32), COLOR_0 (8-bit), TEXCOORD_0 (float32), quality (double), id (integer)"},
                  {"o.obj", "NORMAL (decimal text), COLOR_0 (decimal text), TEXCOORD_0 (decimal text)"},
-                 {"o.off", "NORMAL (decimal text), COLOR_0 (decimal text), TEXCOORD_0 (decimal text)"}};
+                 {"o.off", "NORMAL (decimal text), COLOR_0 (decimal text), TEXCOORD_0 (decimal text)"},
+                 {"o.glb",
+                  "NORMAL (glTF, float32 tolerance), COLOR_0 (glTF, float32 tolerance), TEXCOORD_0 (glTF, float32 tolerance), "
+                  "quality (glTF, float32 tolerance), id (glTF, float32 tolerance)"}};
     for (const auto& c : cases) {
         SCOPED_TRACE(c.name);
         const auto [code, text] = cli("strip '" + in + "' -o '" + (dir / c.name) + "'");

@@ -15,4 +15,10 @@ namespace singlestrip::verify_detail {
 void check_attributes(const VerifyInput& in, const std::vector<uint32_t>& parent, std::vector<std::string>& failures,
                       std::vector<std::string>& notes);
 
+/// The attributes of the strip primitive of a glTF OUT (`strip in.obj -o out.glb`) into
+/// vi.out_attributes, under the input's names (a custom "_NAME" is the input's `name`), with
+/// float32 tolerance; the input's NORMAL is compared normalised (glTF holds unit normals; a
+/// note says so). \throw InputError naming the file when it cannot be read.
+void read_gltf_strip_attributes(const std::string& path, VerifyInput& vi, std::vector<std::string>& notes);
+
 }  // namespace singlestrip::verify_detail

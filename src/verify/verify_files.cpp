@@ -11,6 +11,7 @@
 #include "singlestrip/repair.hpp"
 #include "singlestrip/validate.hpp"
 #include "singlestrip/verify.hpp"
+#include "verify_attributes.hpp"
 
 namespace singlestrip {
 namespace {
@@ -90,7 +91,8 @@ VerifyReport verify_files(TriangleSoup input, const std::string& out_path, const
         vi.out_parent = std::move(om.parent);
         vi.out_attributes = std::move(om.attributes);
     }
-    const std::vector<std::string> notes = replay_input_steps(vi, options.steps, std::move(input.attributes));
+    std::vector<std::string> notes = replay_input_steps(vi, options.steps, std::move(input.attributes));
+    if (is_gltf_path(out_path)) verify_detail::read_gltf_strip_attributes(out_path, vi, notes);
     if (options.indices_path) vi.indices = read_index_file(*options.indices_path);
     if (options.constraints_path)
         vi.constraints =

@@ -1,6 +1,8 @@
 // verify_gltf_scene(): a glTF scene stripped primitive by primitive, checked primitive by
 // primitive with the independent verify() (verify.hpp). Reading the two files and rebuilding the
 // input primitive as the strip saw it use the library's glTF reader.
+#include <cctype>
+#include <cmath>
 #include <string>
 #include <utility>
 #include <vector>
@@ -8,6 +10,7 @@
 #include "io/gltf_access.hpp"
 #include "singlestrip/errors.hpp"
 #include "singlestrip/verify.hpp"
+#include "verify_attributes.hpp"
 
 namespace singlestrip {
 namespace {
@@ -77,6 +80,38 @@ void add(VerifyReport& total, const VerifyReport& r, const std::string& who) {
 }
 
 }  // namespace
+
+namespace verify_detail {
+
+void read_gltf_strip_attributes(const std::string& path, VerifyInput& vi, std::vector<std::string>& notes) {
+    const tinygltf::Model m = gltf_detail::load_model(path);
+    if (m.meshes.empty() || m.meshes[0].primitives.empty()) return;
+    auto custom = [](const std::string& name) {  // the writer's "_NAME" for a name glTF does not know
+        std::string c = "_" + name;
+        for (char& ch : c) ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
+        return c;
+    };
+    for (const auto& [attr, index] : m.meshes[0].primitives[0].attributes) {
+        if (attr == "POSITION") continue;
+        std::string name = attr;
+        for (const VertexAttribute& a : vi.in_attributes)
+            if (a.name != attr && custom(a.name) == attr) name = a.name;
+        const gltf_detail::AccessorData d = gltf_detail::read_accessor(m, index, path);
+        vi.out_attributes.push_back({name, static_cast<uint32_t>(d.components), std::vector<double>(d.values.begin(), d.values.end()), 1e-6,
+                                     1e-6, "glTF, float32 tolerance"});
+    }
+    for (VertexAttribute& a : vi.in_attributes) {
+        if (a.name != "NORMAL" || a.components != 3) continue;
+        for (std::size_t v = 0; 3 * v + 2 < a.values.size(); ++v) {
+            double* n = &a.values[3 * v];
+            const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+            for (int c = 0; c < 3; ++c) n[c] = len > 0 ? n[c] / len : (c == 2 ? 1.0 : 0.0);
+        }
+        notes.push_back("attributes: the input's NORMAL compared normalised (glTF holds unit normals)");
+    }
+}
+
+}  // namespace verify_detail
 
 VerifyReport verify_gltf_scene(const std::string& in_path, const std::string& out_path, const InputSteps& steps) {
     const tinygltf::Model in = gltf_detail::load_model(in_path), out = gltf_detail::load_model(out_path);
