@@ -319,6 +319,72 @@ std::vector<OutputAttribute> ply_attributes(const std::vector<PlyProperty>& prop
     return out;
 }
 
+/// The `vertex` element: positions, and every other scalar property as an attribute.
+void read_ply_vertices(const std::string& path, const PlyElement& el, PlySource& src, size_t data_size, OutputMesh& m) {
+    int ix = -1, iy = -1, iz = -1;
+    for (size_t i = 0; i < el.props.size(); ++i) {
+        if (el.props[i].is_list) continue;
+        if (el.props[i].name == "x") ix = static_cast<int>(i);
+        if (el.props[i].name == "y") iy = static_cast<int>(i);
+        if (el.props[i].name == "z") iz = static_cast<int>(i);
+    }
+    if (ix < 0 || iy < 0 || iz < 0) fail(path, "vertex element lacks x, y or z");
+    if (el.count > data_size + 1) fail(path, "vertex count exceeds the file size (truncated?)");
+    m.points.resize(el.count);
+    std::vector<std::vector<double>> columns(el.props.size());  // scalar properties besides x y z
+    for (size_t v = 0; v < el.count; ++v) {
+        const std::string where = "vertex " + std::to_string(v);
+        for (size_t i = 0; i < el.props.size(); ++i) {
+            const PlyProperty& p = el.props[i];
+            if (p.is_list) {
+                const double k = src.next(p.count_type, where);
+                const uint32_t kk = as_index(path, k, where);
+                for (uint32_t j = 0; j < kk; ++j) src.next(p.type, where);
+                continue;
+            }
+            const double val = src.next(p.type, where);
+            if (static_cast<int>(i) == ix) m.points[v][0] = val;
+            if (static_cast<int>(i) == iy) m.points[v][1] = val;
+            if (static_cast<int>(i) == iz) m.points[v][2] = val;
+            if (static_cast<int>(i) != ix && static_cast<int>(i) != iy && static_cast<int>(i) != iz) columns[i].push_back(val);
+        }
+        check_point(path, v, m.points[v]);
+    }
+    m.attributes = ply_attributes(el.props, columns, {ix, iy, iz});
+}
+
+/// The `face` element: triangles (`vertex_indices`) and the optional `parent` of each.
+void read_ply_faces(const std::string& path, const PlyElement& el, PlySource& src, size_t data_size, OutputMesh& m) {
+    int ilist = -1, iparent = -1;
+    for (size_t i = 0; i < el.props.size(); ++i) {
+        const PlyProperty& p = el.props[i];
+        if (p.is_list && (p.name == "vertex_indices" || p.name == "vertex_index")) ilist = static_cast<int>(i);
+        if (!p.is_list && p.name == "parent") iparent = static_cast<int>(i);
+    }
+    if (ilist < 0) fail(path, "face element lacks a vertex_indices list");
+    if (el.count > data_size + 1) fail(path, "face count exceeds the file size (truncated?)");
+    m.faces.resize(el.count);
+    if (iparent >= 0) m.parent.resize(el.count);
+    for (size_t f = 0; f < el.count; ++f) {
+        const std::string where = "face " + std::to_string(f);
+        for (size_t i = 0; i < el.props.size(); ++i) {
+            const PlyProperty& p = el.props[i];
+            if (p.is_list) {
+                const uint32_t k = as_index(path, src.next(p.count_type, where), where);
+                if (static_cast<int>(i) == ilist && k != 3)
+                    fail(path, where + " has " + std::to_string(k) + " vertices, expected a triangle");
+                for (uint32_t j = 0; j < k; ++j) {
+                    const double val = src.next(p.type, where);
+                    if (static_cast<int>(i) == ilist) m.faces[f][j] = as_index(path, val, where);
+                }
+                continue;
+            }
+            const double val = src.next(p.type, where);
+            if (static_cast<int>(i) == iparent) m.parent[f] = as_index(path, val, where + " parent");
+        }
+    }
+}
+
 OutputMesh read_ply(const std::string& path) {
     const std::string text = slurp(path);
     if (text.empty()) fail(path, "empty file");
@@ -376,66 +442,10 @@ OutputMesh read_ply(const std::string& path) {
     for (const PlyElement& el : elements) {
         if (el.name == "vertex") {
             have_vertex = true;
-            int ix = -1, iy = -1, iz = -1;
-            for (size_t i = 0; i < el.props.size(); ++i) {
-                if (el.props[i].is_list) continue;
-                if (el.props[i].name == "x") ix = static_cast<int>(i);
-                if (el.props[i].name == "y") iy = static_cast<int>(i);
-                if (el.props[i].name == "z") iz = static_cast<int>(i);
-            }
-            if (ix < 0 || iy < 0 || iz < 0) fail(path, "vertex element lacks x, y or z");
-            if (el.count > data_size + 1) fail(path, "vertex count exceeds the file size (truncated?)");
-            m.points.resize(el.count);
-            std::vector<std::vector<double>> columns(el.props.size());  // scalar properties besides x y z
-            for (size_t v = 0; v < el.count; ++v) {
-                const std::string where = "vertex " + std::to_string(v);
-                for (size_t i = 0; i < el.props.size(); ++i) {
-                    const PlyProperty& p = el.props[i];
-                    if (p.is_list) {
-                        const double k = src.next(p.count_type, where);
-                        const uint32_t kk = as_index(path, k, where);
-                        for (uint32_t j = 0; j < kk; ++j) src.next(p.type, where);
-                        continue;
-                    }
-                    const double val = src.next(p.type, where);
-                    if (static_cast<int>(i) == ix) m.points[v][0] = val;
-                    if (static_cast<int>(i) == iy) m.points[v][1] = val;
-                    if (static_cast<int>(i) == iz) m.points[v][2] = val;
-                    if (static_cast<int>(i) != ix && static_cast<int>(i) != iy && static_cast<int>(i) != iz) columns[i].push_back(val);
-                }
-                check_point(path, v, m.points[v]);
-            }
-            m.attributes = ply_attributes(el.props, columns, {ix, iy, iz});
+            read_ply_vertices(path, el, src, data_size, m);
         } else if (el.name == "face") {
             have_face = true;
-            int ilist = -1, iparent = -1;
-            for (size_t i = 0; i < el.props.size(); ++i) {
-                const PlyProperty& p = el.props[i];
-                if (p.is_list && (p.name == "vertex_indices" || p.name == "vertex_index")) ilist = static_cast<int>(i);
-                if (!p.is_list && p.name == "parent") iparent = static_cast<int>(i);
-            }
-            if (ilist < 0) fail(path, "face element lacks a vertex_indices list");
-            if (el.count > data_size + 1) fail(path, "face count exceeds the file size (truncated?)");
-            m.faces.resize(el.count);
-            if (iparent >= 0) m.parent.resize(el.count);
-            for (size_t f = 0; f < el.count; ++f) {
-                const std::string where = "face " + std::to_string(f);
-                for (size_t i = 0; i < el.props.size(); ++i) {
-                    const PlyProperty& p = el.props[i];
-                    if (p.is_list) {
-                        const uint32_t k = as_index(path, src.next(p.count_type, where), where);
-                        if (static_cast<int>(i) == ilist && k != 3)
-                            fail(path, where + " has " + std::to_string(k) + " vertices, expected a triangle");
-                        for (uint32_t j = 0; j < k; ++j) {
-                            const double val = src.next(p.type, where);
-                            if (static_cast<int>(i) == ilist) m.faces[f][j] = as_index(path, val, where);
-                        }
-                        continue;
-                    }
-                    const double val = src.next(p.type, where);
-                    if (static_cast<int>(i) == iparent) m.parent[f] = as_index(path, val, where + " parent");
-                }
-            }
+            read_ply_faces(path, el, src, data_size, m);
         } else {
             // Unknown element: read and discard its values.
             for (size_t r = 0; r < el.count; ++r) {
