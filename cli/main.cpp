@@ -308,8 +308,8 @@ std::vector<std::string> attributes_not_written(const StripArgs& a, const ss::Pi
         bool kept = ss::is_gltf_path(out);
         if (!kept) {
             const ss::OutputFormat f = ss::output_format_for(out);
-            kept = f == ss::OutputFormat::Ply ||
-                   (f == ss::OutputFormat::Obj && (at.name == "TEXCOORD_0" || at.name == "NORMAL" || at.name == "COLOR_0"));
+            const bool common = at.name == "TEXCOORD_0" || at.name == "NORMAL" || at.name == "COLOR_0";
+            kept = f == ss::OutputFormat::Ply || ((f == ss::OutputFormat::Obj || f == ss::OutputFormat::Off) && common);
         }
         if (!kept) lost.push_back(at.name);
     }
@@ -385,7 +385,7 @@ int run_strip(const StripArgs& a) {
     if (const auto lost = attributes_not_written(a, r); !lost.empty()) {
         std::cerr << "singlestrip: " << a.input << ": note: " << a.output << " has no place for the vertex attributes";
         for (const auto& n : lost) std::cerr << ' ' << n;
-        std::cerr << " (.ply keeps them all; .obj keeps TEXCOORD_0, NORMAL and COLOR_0)\n";
+        std::cerr << " (.ply keeps them all; .obj and .off keep TEXCOORD_0, NORMAL and COLOR_0)\n";
     }
     return app::kExitOk;
 }

@@ -2,13 +2,18 @@
 //
 //   singlestrip.strip(vertices, faces, constraints=None, source=None, target=None, cycles=False,
 //                     seed_face=None, greedy=True, orient=False, name="input",
-//                     engine="matching") -> dict
-//   singlestrip.verify(vertices, faces, result, constraints=None, source=None, target=None) -> dict
+//                     engine="matching", repair=False, weld=False, join="degenerate",
+//                     attributes=None, blend=None) -> dict
+//   singlestrip.verify(vertices, faces, result, constraints=None, source=None, target=None,
+//                      repair=False, weld=False, orient=False, attributes=None, blend=None) -> dict
 //   singlestrip.decode_strip(indices) -> (T, 3) uint32 array
-//   singlestrip.read(path, format=None) -> (V (n, 3) float64, F (m, 3) uint32)
+//   singlestrip.read(path, format=None, attributes=False) -> (V (n, 3) float64, F (m, 3) uint32)
+//       or, with attributes=True, dict(vertices, faces, attributes, blend) (strip()'s arguments)
 //
 // Arrays in are checked for shape and kind before any conversion: vertices must be real numbers,
-// faces integers (a float face array is refused, never truncated), both of shape (k, 3).
+// faces integers (a float face array is refused, never truncated), both of shape (k, 3);
+// attributes a dict of real (n,) or (n, k) arrays (TypeError for the wrong kinds, ValueError for
+// the wrong row count or a NaN). Midpoint attributes are the library's (stripify()), not Python's.
 // strip() runs the CLI's pipeline (stripify(), pipeline.hpp: the same checks and messages,
 // prefixed by `name` where the CLI has the file name) and its report (report.hpp). Every
 // singlestrip::InputError / RequestError becomes ValueError, an InternalError RuntimeError.
@@ -24,8 +29,10 @@
 #include <utility>
 #include <vector>
 
+#include "singlestrip/attributes.hpp"
 #include "singlestrip/encode.hpp"
 #include "singlestrip/errors.hpp"
+#include "singlestrip/gltf.hpp"
 #include "singlestrip/pipeline.hpp"
 #include "singlestrip/report.hpp"
 #include "singlestrip/route.hpp"
@@ -207,24 +214,122 @@ py::dict route_dict(const ss::Route& route) {
     return d;
 }
 
-py::tuple read_mesh(const std::string& path, const py::object& format) {
+const char* blend_name(ss::AttributeBlend b) {
+    switch (b) {
+        case ss::AttributeBlend::Unit:
+            return "unit";
+        case ss::AttributeBlend::Nearest:
+            return "nearest";
+        case ss::AttributeBlend::Linear:
+            break;
+    }
+    return "linear";
+}
+
+ss::AttributeBlend to_blend(const py::handle& o, const std::string& name) {
+    if (!py::isinstance<py::str>(o))
+        throw py::type_error("blend['" + name + "'] must be a str (\"linear\", \"unit\" or \"nearest\"), got " +
+                             std::string(py::str(py::type::of(o).attr("__name__"))));
+    const auto s = o.cast<std::string>();
+    if (s == "linear") return ss::AttributeBlend::Linear;
+    if (s == "unit") return ss::AttributeBlend::Unit;
+    if (s == "nearest") return ss::AttributeBlend::Nearest;
+    throw py::value_error("blend['" + name + "'] is '" + s + "'; choices: linear, unit, nearest");
+}
+
+/// One attribute array: (n,) or (n, k) real numbers, finite, n = the vertex count.
+ss::VertexAttribute to_attribute(const std::string& name, const py::handle& obj, size_t num_vertices) {
+    py::array a;
+    try {
+        a = py::array::ensure(obj);
+    } catch (const py::error_already_set&) {
+    }
+    const std::string what = "attributes['" + name + "']";
+    if (!a) throw py::type_error(what + " must be a numpy array (or nested sequence) of numbers");
+    const char kind = a.dtype().kind();
+    if (a.size() != 0 && kind != 'f' && kind != 'i' && kind != 'u' && kind != 'b')
+        throw py::type_error(what + " must hold real numbers, got dtype " + std::string(py::str(a.dtype())));
+    if ((a.ndim() != 1 && a.ndim() != 2) || static_cast<size_t>(a.shape(0)) != num_vertices || (a.ndim() == 2 && a.shape(1) < 1))
+        throw py::value_error(what + " must have shape (n,) or (n, k) with n = " + std::to_string(num_vertices) +
+                              " (one row per vertex), got shape " + shape_of(obj));
+    const auto d = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(a);
+    ss::VertexAttribute out{name, a.ndim() == 2 ? static_cast<uint32_t>(a.shape(1)) : 1u, ss::blend_for(name),
+                            std::vector<double>(d.data(), d.data() + d.size())};
+    for (size_t i = 0; i < out.values.size(); ++i)
+        if (!std::isfinite(out.values[i]))
+            throw py::value_error(what + ": vertex " + std::to_string(i / out.components) + " has a non-finite value");
+    return out;
+}
+
+/// `attributes` (dict name -> array) and `blend` (dict name -> kind; default from the name,
+/// attributes.hpp blend_for) as the soup's attributes.
+std::vector<ss::VertexAttribute> to_attributes(const py::object& attributes, const py::object& blend, size_t num_vertices) {
+    std::vector<ss::VertexAttribute> out;
+    if (!attributes.is_none() && !py::isinstance<py::dict>(attributes))
+        throw py::type_error("attributes must be a dict (name -> array of shape (n, k)), got " +
+                             std::string(py::str(py::type::of(attributes).attr("__name__"))));
+    if (!blend.is_none() && !py::isinstance<py::dict>(blend))
+        throw py::type_error("blend must be a dict (name -> \"linear\", \"unit\" or \"nearest\")");
+    if (!attributes.is_none())
+        for (const auto& [key, value] : attributes.cast<py::dict>()) {
+            if (!py::isinstance<py::str>(key))
+                throw py::type_error("attributes: every name must be a str, got " + std::string(py::repr(key)));
+            out.push_back(to_attribute(key.cast<std::string>(), value, num_vertices));
+        }
+    if (!blend.is_none())
+        for (const auto& [key, value] : blend.cast<py::dict>()) {
+            const std::string name = py::str(key);
+            ss::VertexAttribute* a = nullptr;
+            for (ss::VertexAttribute& x : out)
+                if (x.name == name) a = &x;
+            if (!a) throw py::value_error("blend names '" + name + "', which is not in attributes");
+            a->blend = to_blend(value, name);
+        }
+    return out;
+}
+
+/// Attributes as {name: (n, k) float64 array} and {name: blend kind}.
+std::pair<py::dict, py::dict> attributes_dicts(const std::vector<ss::VertexAttribute>& attrs) {
+    py::dict values, blends;
+    for (const ss::VertexAttribute& a : attrs) {
+        const auto k = static_cast<py::ssize_t>(a.components);
+        py::array_t<double> arr({k == 0 ? py::ssize_t{0} : static_cast<py::ssize_t>(a.values.size()) / k, k});
+        std::copy(a.values.begin(), a.values.end(), arr.mutable_data());
+        values[py::str(a.name)] = arr;
+        blends[py::str(a.name)] = blend_name(a.blend);
+    }
+    return {values, blends};
+}
+
+/// The file as (V, F), or with `attributes` as the dict strip() takes: strip(**read(p, attributes=True)).
+py::object read_mesh(const std::string& path, const py::object& format, bool attributes) {
     ss::ReadOptions o;
     if (!format.is_none()) o.format = format.cast<std::string>();
     ss::TriangleSoup soup;
     translate([&] {
         py::gil_scoped_release release;
-        soup = ss::read_input(path, o);
+        // glTF as the CLI reads it for a plain (non-scene) output: every triangle primitive, one soup.
+        soup = ss::is_gltf_path(path) && o.format.empty() ? ss::read_gltf_soup(path) : ss::read_input(path, o);
         return 0;
     });
-    return py::make_tuple(rows_array<double>(soup.points), rows_array<uint32_t>(soup.triangles));
+    if (!attributes) return py::make_tuple(rows_array<double>(soup.points), rows_array<uint32_t>(soup.triangles));
+    py::dict d;
+    d["vertices"] = rows_array<double>(soup.points);
+    d["faces"] = rows_array<uint32_t>(soup.triangles);
+    const auto [values, blends] = attributes_dicts(soup.attributes);
+    d["attributes"] = values;
+    d["blend"] = blends;
+    return d;
 }
 
 py::dict strip(const py::object& vertices, const py::object& faces, const py::object& constraints, const py::object& source,
                const py::object& target, bool cycles, const py::object& seed_face, bool greedy, bool orient, const std::string& name,
-               const std::string& engine, bool repair, bool weld, const std::string& join) {
+               const std::string& engine, bool repair, bool weld, const std::string& join, const py::object& attributes,
+               const py::object& blend) {
     ss::TriangleSoup soup;
     soup.points = to_points(vertices, name.c_str());
     soup.triangles = to_faces(faces, soup.points.size(), name.c_str());
+    soup.attributes = to_attributes(attributes, blend, soup.points.size());
     if (soup.triangles.empty()) throw py::value_error(name + ": the mesh has no faces");
     ss::PipelineOptions opt;
     opt.strip.engine = to_engine(engine);
@@ -263,6 +368,10 @@ py::dict strip(const py::object& vertices, const py::object& faces, const py::ob
         out["cycles"] = py::none();
     }
     out["route"] = route_dict(ss::strip_route(r.arrays));
+    // Interpolated by the library (stripify(), attributes.hpp): midpoints blended in their parent face.
+    const auto [values, blends] = attributes_dicts(r.arrays.attributes);
+    out["attributes"] = values;
+    out["blend"] = blends;
     // The CLI's --report keys (report.hpp), minus file names and timings.
     ss::ReportInput rep;
     rep.result = &r;
@@ -271,16 +380,23 @@ py::dict strip(const py::object& vertices, const py::object& faces, const py::ob
 }
 
 py::dict verify(const py::object& vertices, const py::object& faces, const py::dict& result, const py::object& constraints,
-                const py::object& source, const py::object& target, bool repair, bool weld, bool orient) {
+                const py::object& source, const py::object& target, bool repair, bool weld, bool orient, const py::object& attributes,
+                const py::object& blend) {
     ss::VerifyInput in;
     in.in_points = to_points(vertices, "vertices");
     in.in_faces = to_faces(faces, in.in_points.size(), "faces");
+    std::vector<ss::VertexAttribute> in_attributes = to_attributes(attributes, blend, in.in_points.size());
     if (!result.contains("vertices") || !result.contains("faces"))
         throw py::value_error("result must be a dict with 'vertices' and 'faces' (as returned by singlestrip.strip)");
     in.out_points = to_points(result["vertices"], "result['vertices']");
     in.out_faces = to_faces(result["faces"], in.out_points.size(), "result['faces']");
     if (result.contains("parent") && !result["parent"].is_none())
         in.out_parent = py::cast<std::vector<uint32_t>>(py::array_t<uint32_t, py::array::forcecast>::ensure(result["parent"]));
+    if (result.contains("attributes") && !result["attributes"].is_none()) {
+        // Float64 arrays: the verifier's double tolerance (1e-9 absolute + relative).
+        for (ss::VertexAttribute& a : to_attributes(result["attributes"], py::none(), in.out_points.size()))
+            in.out_attributes.push_back({a.name, a.components, std::move(a.values)});
+    }
     if (result.contains("strip") && !result["strip"].is_none())
         in.indices = py::cast<std::vector<uint32_t>>(py::array_t<uint32_t, py::array::forcecast>::ensure(result["strip"]));
     if (result.contains("cycles") && !result["cycles"].is_none()) {
@@ -298,7 +414,7 @@ py::dict verify(const py::object& vertices, const py::object& faces, const py::d
     ss::VerifyReport rep;
     {
         py::gil_scoped_release release;
-        const std::vector<std::string> notes = ss::replay_input_steps(in, {weld, repair, orient});
+        const std::vector<std::string> notes = ss::replay_input_steps(in, {weld, repair, orient}, std::move(in_attributes));
         rep = ss::verify(in);
         rep.notes.insert(rep.notes.begin(), notes.begin(), notes.end());
     }
@@ -327,7 +443,7 @@ PYBIND11_MODULE(singlestrip, m) {
     m.def("strip", &strip, py::arg("vertices"), py::arg("faces"), py::arg("constraints") = py::none(), py::arg("source") = py::none(),
           py::arg("target") = py::none(), py::arg("cycles") = false, py::arg("seed_face") = py::none(), py::arg("greedy") = true,
           py::arg("orient") = false, py::arg("name") = "input", py::arg("engine") = "matching", py::arg("repair") = false,
-          py::arg("weld") = false, py::arg("join") = "degenerate",
+          py::arg("weld") = false, py::arg("join") = "degenerate", py::arg("attributes") = py::none(), py::arg("blend") = py::none(),
           R"doc(Turn a triangle mesh into ONE triangle strip per edge-connected component.
 
 vertices: (n, 3) floats; faces: (m, 3) vertex indices (0-based), consistently oriented
@@ -340,22 +456,33 @@ engine: "matching" (default) or "growth" (the paper's builder, for comparison).
 repair: weld, drop degenerate/duplicate faces, cut non-manifold and non-orientable parts apart,
 orient (docs/repair.md; report["repair"] says what changed). weld: only merge equal vertices.
 join: "degenerate" (default) or "restart" (0xFFFFFFFF) between the strips of several components.
+attributes: per-vertex attributes, a dict name -> (n,) or (n, k) array of real numbers (glTF
+names: NORMAL, TEXCOORD_0, COLOR_0, ...; any other name is custom). blend: dict name -> how a
+midpoint gets its value: "linear" (barycentric average), "unit" (average renormalised) or
+"nearest" (copied from the nearest corner); default from the name (NORMAL/TANGENT unit,
+JOINTS_n/WEIGHTS_n nearest, others linear). read(path, attributes=True) gives both dicts.
 
 Returns a dict: vertices (n', 3) float64 (input vertices first, midpoints after), faces (m', 3)
-uint32 in strip order, parent (m',) uint32 input face of each output face, strip (k,) uint32
+uint32 in strip order, parent (m',) uint32 input face of each output face, attributes (dict
+name -> (n', k) float64 per output vertex, midpoints interpolated by the library; empty without
+input attributes), blend (dict name -> kind), strip (k,) uint32
 GL_TRIANGLE_STRIP indices, cycles (list of uint32 arrays, or None), route (dict: points (k, 3)
 float64 through face centroids and shared-edge midpoints in strip order, face and parent (k,)
 uint32, distance (k,) float64 along the route, length, planar_z), report (dict).
-Raises ValueError for arrays of the wrong shape or kind (faces must be integers).
+Raises ValueError for arrays of the wrong shape or kind (faces must be integers), TypeError for
+attributes that are not a dict of numeric arrays.
 Raises ValueError for invalid input, an impossible request or an unknown engine (same messages
 as the CLI).)doc");
     m.def("verify", &verify, py::arg("vertices"), py::arg("faces"), py::arg("result"), py::arg("constraints") = py::none(),
           py::arg("source") = py::none(), py::arg("target") = py::none(), py::arg("repair") = false, py::arg("weld") = false,
-          py::arg("orient") = false,
+          py::arg("orient") = false, py::arg("attributes") = py::none(), py::arg("blend") = py::none(),
           R"doc(Independently check `result` (a dict as returned by strip(): vertices, faces, optional parent,
 strip, cycles) against the input mesh. Returns a dict with ok (bool), failures, notes, counts and
 text (the CLI's `verify` output). repair/weld/orient: `result` was made with them; the input is
-replayed through the library's repair first (a note says what it changed).)doc");
+replayed through the library's repair first (a note says what it changed).
+attributes, blend: the input's vertex attributes, as given to strip(); with result["attributes"]
+every output vertex's values are checked (input vertices unchanged, midpoints interpolated in
+their parent face; a failure names the vertex, the attribute and both values).)doc");
     m.def(
         "decode_strip",
         [](const py::object& indices) {
@@ -363,11 +490,17 @@ replayed through the library's repair first (a note says what it changed).)doc")
             return rows_array<uint32_t>(ss::decode_triangle_strip(idx));
         },
         py::arg("indices"), "Decode GL_TRIANGLE_STRIP indices into (t, 3) triangles (degenerate ones skipped).");
-    m.def("read", &read_mesh, py::arg("path"), py::arg("format") = py::none(),
-          R"doc(Read a mesh file (.obj, .off, .ply, .stl, as the CLI does; or "builtin:genus2").
+    m.def("read", &read_mesh, py::arg("path"), py::arg("format") = py::none(), py::arg("attributes") = false,
+          R"doc(Read a mesh file (.obj, .off, .ply, .stl, .glb, .gltf, as the CLI does; or "builtin:genus2";
+a glTF file gives all its triangle primitives as one mesh).
 
 format: "obj", "off", "ply" or "stl" when the name does not tell (e.g. "/dev/stdin").
 Returns (V, F): V (n, 3) float64 vertices in file order, F (m, 3) uint32 triangles (0-based;
-polygons fan-triangulated; STL corners welded). Raises ValueError with the CLI's message for a
-missing, unreadable or malformed file.)doc");
+polygons fan-triangulated; STL corners welded).
+attributes=True returns a dict instead, the keyword arguments of strip(): vertices, faces,
+attributes (name -> (n, k) float64: OBJ vt/vn as TEXCOORD_0/NORMAL, PLY and OFF normals,
+colours in [0, 1], texture coordinates and other vertex properties, glTF accessors) and blend
+(name -> "linear", "unit" or "nearest"). A vertex is a position plus its attributes: an OBJ
+seam gives one vertex per (v, vt, vn) combination. strip(**read(path, attributes=True)) keeps them.
+Raises ValueError with the CLI's message for a missing, unreadable or malformed file.)doc");
 }

@@ -30,7 +30,15 @@
 #include "singlestrip/validate.hpp"
 
 #ifdef SINGLESTRIP_HAVE_RENDER
+#define TINYGLTF_NO_STB_IMAGE
+#define TINYGLTF_NO_STB_IMAGE_WRITE
+#define TINYGLTF_NO_EXTERNAL_IMAGE
+#include <tiny_gltf.h>
+
+#include <cstring>
+
 #include "render/render.hpp"
+#include "singlestrip/gltf_scene.hpp"
 #endif
 
 using namespace singlestrip;
@@ -207,6 +215,115 @@ TEST(Render, TexturedStripLooksLikeTheTexturedInput) {
         EXPECT_EQ(worst, 0u) << "pixels whose colour differs by more than 2 levels";
         EXPECT_GT(bad, 20u) << "uninterpolated midpoints must show";
     }
+}
+
+namespace {
+
+/// One accessor of a glTF model as doubles (float or unsigned integer components, normalised
+/// ones scaled to [0, 1]), `components` per element; tightly packed or strided views.
+std::vector<double> accessor_values(const tinygltf::Model& m, int index) {
+    const tinygltf::Accessor& a = m.accessors.at(static_cast<size_t>(index));
+    const tinygltf::BufferView& v = m.bufferViews.at(static_cast<size_t>(a.bufferView));
+    const auto k = static_cast<size_t>(tinygltf::GetNumComponentsInType(static_cast<uint32_t>(a.type)));
+    const auto size = static_cast<size_t>(tinygltf::GetComponentSizeInBytes(static_cast<uint32_t>(a.componentType)));
+    const size_t stride = v.byteStride ? v.byteStride : k * size;
+    const unsigned char* base = m.buffers.at(static_cast<size_t>(v.buffer)).data.data() + v.byteOffset + a.byteOffset;
+    std::vector<double> out;
+    for (size_t e = 0; e < a.count; ++e)
+        for (size_t c = 0; c < k; ++c) {
+            const unsigned char* p = base + e * stride + c * size;
+            double x = 0;
+            if (a.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT) {
+                float f;
+                std::memcpy(&f, p, 4);
+                x = f;
+            } else {
+                uint32_t u = 0;
+                std::memcpy(&u, p, size);  // little-endian host (glTF is little-endian)
+                x = a.normalized ? u / double((uint64_t{1} << (8 * size)) - 1) : u;
+            }
+            out.push_back(x);
+        }
+    return out;
+}
+
+tinygltf::Model load_glb(const std::string& path) {
+    tinygltf::Model m;
+    tinygltf::TinyGLTF loader;
+    // The pictures use the renderer's own texture: the images are not decoded.
+    loader.SetImageLoader(
+        [](tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) { return true; }, nullptr);
+    std::string err, warn;
+    EXPECT_TRUE(loader.LoadBinaryFromFile(&m, &err, &warn, path)) << path << ": " << err;
+    return m;
+}
+
+/// A primitive's positions, texture coordinates and indices (0, 1, 2, ... when it has none).
+struct TexturedPrimitive {
+    std::vector<Point3> points;
+    std::vector<double> uv;
+    std::vector<uint32_t> indices;
+};
+
+TexturedPrimitive textured_primitive(const tinygltf::Model& m, const tinygltf::Primitive& p) {
+    TexturedPrimitive t;
+    const std::vector<double> pos = accessor_values(m, p.attributes.at("POSITION"));
+    for (size_t i = 0; i + 2 < pos.size(); i += 3) t.points.push_back({pos[i], pos[i + 1], pos[i + 2]});
+    t.uv = accessor_values(m, p.attributes.at("TEXCOORD_0"));
+    if (p.indices >= 0)
+        for (double x : accessor_values(m, p.indices)) t.indices.push_back(static_cast<uint32_t>(x));
+    else
+        for (uint32_t i = 0; i < t.points.size(); ++i) t.indices.push_back(i);
+    return t;
+}
+
+}  // namespace
+
+// Issue 18, item 4, through the real glTF pipeline: scene.glb (several textured primitives)
+// stripped by strip_gltf_file() into a .glb; each output TRIANGLE_STRIP primitive, read back
+// from the file, is drawn with its texture coordinates beside the input primitive drawn as
+// GL_TRIANGLES; the pictures must agree (2 levels, as above). New vertices given a wrong texture
+// coordinate must show.
+TEST(Render, TexturedGltfScenePrimitivesLookLikeTheInputOnes) {
+    const fs::path dir = fs::path(::testing::TempDir()) / "singlestrip_render_scene";
+    fs::create_directories(dir);
+    const std::string in_path = std::string(SINGLESTRIP_SOURCE_DIR) + "/tests/data/scene.glb", out_path = (dir / "scene.glb").string();
+    const std::vector<GltfPrimitiveResult> results = strip_gltf_file(in_path, out_path, PipelineOptions{});
+    const tinygltf::Model in = load_glb(in_path), out = load_glb(out_path);
+    size_t compared = 0, with_splits = 0;
+    for (const GltfPrimitiveResult& pr : results) {
+        if (!pr.stripped) continue;
+        SCOPED_TRACE("mesh " + std::to_string(pr.mesh) + " primitive " + std::to_string(pr.primitive));
+        const tinygltf::Primitive& ip = in.meshes[static_cast<size_t>(pr.mesh)].primitives[static_cast<size_t>(pr.primitive)];
+        const tinygltf::Primitive& op = out.meshes[static_cast<size_t>(pr.mesh)].primitives[static_cast<size_t>(pr.primitive)];
+        ASSERT_EQ(op.mode, TINYGLTF_MODE_TRIANGLE_STRIP);
+        if (!ip.attributes.count("TEXCOORD_0")) continue;
+        const TexturedPrimitive a = textured_primitive(in, ip), b = textured_primitive(out, op);
+        ASSERT_EQ(b.uv.size(), 2 * b.points.size());
+        std::vector<double> wrong = b.uv;  // new vertices (after the input's) given vertex 0's coordinate
+        for (size_t v = a.points.size(); v < b.points.size(); ++v) wrong[2 * v] = b.uv[0] + 0.37, wrong[2 * v + 1] = b.uv[1] + 0.37;
+        size_t textured = 0, worst = 0, bad = 0;
+        for (const render::View& view : kViews) {
+            const auto pa = render::render_textured(a.points, a.uv, a.indices, render::Primitive::Triangles, a.points, view, kW, kH);
+            const auto pb = render::render_textured(b.points, b.uv, b.indices, render::Primitive::TriangleStrip, a.points, view, kW, kH);
+            const auto pw = render::render_textured(b.points, wrong, b.indices, render::Primitive::TriangleStrip, a.points, view, kW, kH);
+            for (size_t i = 3; i < pa.size(); i += 4) textured += pa[i] != 0;
+            EXPECT_EQ(differing_rgba(pa, pb, 255 - 1), 0u) << "coverage differs";
+            worst = std::max(worst, differing_rgba(pa, pb, 2));
+            bad += differing_rgba(pa, pw, 2);
+        }
+        std::cerr << "[ render   ] scene.glb mesh " << pr.mesh << " primitive " << pr.primitive << ": " << textured << " textured pixels, "
+                  << pr.splits << " splits, " << worst << " differ by more than 2 levels; wrong new texture coordinates " << bad << '\n';
+        EXPECT_GT(textured, static_cast<size_t>(kW * kH / 50));
+        EXPECT_EQ(worst, 0u) << "pixels whose colour differs by more than 2 levels";
+        if (pr.splits > 0) {
+            ++with_splits;
+            EXPECT_GT(bad, 20u) << "wrong texture coordinates at the new vertices must show";
+        }
+        ++compared;
+    }
+    EXPECT_GE(compared, 3u) << "scene.glb has three textured triangle primitives";
+    EXPECT_GT(with_splits, 0u);
 }
 
 TEST(Render, ConstrainedStripWithSplitsCoversTheInput) {

@@ -6,7 +6,8 @@
 //         normals every corner has become TEXCOORD_0 / NORMAL, vertex colours "v x y z r g b"
 //         COLOR_0 (TriangleSoup::attributes); a position used with several (vt, vn) is one
 //         vertex per combination, the extra ones after the file's vertices (read_obj.cpp)
-//   .off  OFF / COFF / NOFF / CNOFF, ASCII or BINARY (colours and normals checked, not kept)
+//   .off  [ST][C][N]OFF, ASCII or BINARY: vertex normals, colours and texture coordinates
+//         become NORMAL, COLOR_0 (in [0, 1]) and TEXCOORD_0; face colours are checked, not kept
 //   .ply  PLY, ASCII or binary (little/big endian); faces from `face` and `tristrips` elements;
 //         scalar vertex properties become attributes (nx ny nz: NORMAL; red green blue [alpha]:
 //         COLOR_0, integers scaled to [0, 1]; s t, u v, texture_u texture_v: TEXCOORD_0; any
@@ -134,7 +135,8 @@ OutputFormat output_format_for(const std::string& path);
 ///   .obj: "v x y z" lines ("v x y z r g b" with COLOR_0), one "vt u v" per vertex with
 ///         TEXCOORD_0, one "vn x y z" per vertex with NORMAL, then "f a/a/a b/b/b c/c/c" (1-based; "a/a", "a//a" or "a" as the
 ///         attributes go); OBJ has no place for `parent` or other attributes.
-///   .off: "OFF", counts, vertices, "3 a b c" faces (no attributes).
+///   .off: "[ST][C][N]OFF" as the attributes go, counts, vertices "x y z [nx ny nz] [r g b [a]]
+///         [s t]" (NORMAL, COLOR_0 as fractions clamped into [0, 1], TEXCOORD_0), "3 a b c" faces.
 ///   .stl: binary STL, one float32 facet per face with its unit normal; STL has no shared
 ///         vertices, no `parent` and float32 coordinates, so `verify` cannot check it.
 /// Text formats write the shortest decimal that round-trips (std::to_chars), so coordinates read

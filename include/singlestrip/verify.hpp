@@ -33,6 +33,14 @@
 //     edge and no output vertex lies strictly inside it);
 //   * source/target (optional): the first face has vertex `source`, the last face of the first
 //     strip has `target`;
+//   * attributes (when both sides carry some; matched by name, others noted): every referenced
+//     output vertex's values: an input vertex (index < n) has the input's values; any other
+//     vertex lies in its parent face and has the blend of the parent's corners at its
+//     barycentric coordinates (the verifier's own): Linear the weighted average (a midpoint:
+//     its edge's two ends averaged), Unit that average renormalised (a TANGENT's w and a
+//     Nearest attribute: the values of one corner of largest weight). Tolerance per component:
+//     abs + rel * |expected|, from how the file stores the attribute (OutputAttribute), stated
+//     in each failure, which names the vertex, the attribute and both values;
 //   * cycles (optional; one-component outputs only, else a note): each cycle is a closed chain of edge-adjacent output faces; there are
 //     2g+h-1 of them (2g for a closed surface); they are linearly independent in H1(M; Z2),
 //     tested by their intersection parities with a basis of H1(M, dM) built by tree-cotree on
@@ -58,6 +66,16 @@
 
 namespace singlestrip {
 
+/// One vertex attribute of the output as read back from a file, and how exactly the file holds it.
+struct OutputAttribute {
+    std::string name;  ///< glTF name as the readers give it (NORMAL, COLOR_0, TEXCOORD_0, custom)
+    uint32_t components = 1;
+    std::vector<double> values;  ///< components per output vertex; NaN where the file gives none
+    double abs_tol = 1e-9;       ///< allowed |got - expected| = abs_tol + rel_tol * |expected|
+    double rel_tol = 1e-9;
+    std::string storage = "double";  ///< named in messages: "double", "float32", "8-bit", "integer", "decimal text"
+};
+
 /// Everything verify() looks at. Indices are 0-based; vertex ids of `constraints`, `source`,
 /// `target` are input vertex ids (== output vertex ids, by the output contract).
 struct VerifyInput {
@@ -75,6 +93,10 @@ struct VerifyInput {
     /// out_points are float32 (a glTF output): input vertices are compared after rounding to
     /// float32 and every geometric tolerance is 1e-5 (relative) instead of 1e-9; a note says so.
     bool float32 = false;
+    /// The input's vertex attributes (blend rules from here) and the output's as read back;
+    /// either empty: attributes are not checked.
+    std::vector<VertexAttribute> in_attributes;
+    std::vector<OutputAttribute> out_attributes;
 };
 
 /// The VerifyInput of one strip: `input` against `output` (points, faces in strip order, parents)
@@ -154,14 +176,19 @@ struct OutputMesh {
     std::vector<Point3> points;
     std::vector<Triangle> faces;
     std::vector<uint32_t> parent;  ///< empty unless the PLY has a face property `parent`
+    /// PLY vertex properties (grouped as the writer names them: nx ny nz, red green blue [alpha],
+    /// s t; name_0 name_1 ...), OBJ vt / vn / "v x y z r g b", OFF normals, colours, s t.
+    std::vector<OutputAttribute> attributes;
 };
 
 /// Reads an output file by extension: .ply (ascii, binary_little_endian or binary_big_endian;
 /// vertex properties x y z of any numeric type; face list `vertex_indices` (or `vertex_index`);
-/// optional face property `parent`), .obj (v / f records, "i", "i/t", "i/t/n", "i//n", negative
-/// indices relative), .off. This reader is the verifier's own (independent of io.hpp).
+/// optional face property `parent`), .obj (v / vt / vn / f records, "i", "i/t", "i/t/n", "i//n",
+/// negative indices relative), .off ([ST][C][N]OFF). This reader is the verifier's own
+/// (independent of io.hpp).
 /// \throw InputError naming the file and the problem: missing/unreadable, unknown extension,
-///        malformed header, truncated data, a face that is not a triangle, an index out of range.
+///        malformed header, truncated data, a face that is not a triangle, an index out of range,
+///        an OBJ vertex given two texture coordinates or normals by its corners.
 OutputMesh read_output_mesh(const std::string& path);
 
 /// glTF in and glTF out (`strip scene.glb -o out.glb`): every primitive of OUT in mode 5 is

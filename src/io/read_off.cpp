@@ -1,16 +1,25 @@
 // singlestrip — OFF reader (Geomview OFF, ASCII and BINARY).
 //
-// Contract. Header: optional '#' comment lines, the keyword OFF, COFF, NOFF or CNOFF (the ST, 4
-// and n variants and SKEL are refused by name), then the vertex, face and edge counts (edges
-// ignored) on the same or following lines. ASCII body: one vertex per line, x y z first
-// (plain OFF: the rest of the line is ignored; NOFF: exactly x y z nx ny nz; COFF: x y z [n] then
-// r g b [a], all integers in [0, 255] or all fractions in [0, 1]); then one face per line,
+// Contract. Header: optional '#' comment lines, the keyword [ST][C][N]OFF (OFF, COFF, NOFF,
+// CNOFF, STOFF, STCOFF, STNOFF, STCNOFF; the 4 and n variants and SKEL are refused by name),
+// then the vertex, face and edge counts (edges ignored) on the same or following lines. ASCII
+// body: one vertex per line, x y z first, then as the keyword says, in this order: N: nx ny nz;
+// C: r g b [a], all integers in [0, 255] or all fractions in [0, 1]; ST: s t (plain OFF: the
+// rest of the line is ignored; otherwise the count must match); then one face per line,
 // k v1..vk (0-based; a COFF face may end with a colour: 1 colour-map index, or 3 or 4 numbers,
 // checked as vertex colours; plain OFF ignores what follows the indices). '#' ends a line.
 // Blank and comment lines may come anywhere. Indices and corner counts are integers (an integral
 // decimal such as 3.0 is accepted, as CGAL did). BINARY ("OFF BINARY"): big-endian int32 counts,
-// float32 x y z (and nx ny nz for NOFF; colours are never stored), faces as int32 k then k
-// int32 indices. Errors name the line (ASCII) or the face/vertex number (binary).
+// float32 x y z (and nx ny nz for NOFF; colours are never stored; ST is refused), faces as int32
+// k then k int32 indices. Errors name the line (ASCII) or the face/vertex number (binary).
+//
+// Attributes kept (TriangleSoup::attributes, the names the PLY and OBJ readers use): normals
+// as NORMAL (unit blend), vertex colours as COLOR_0 in [0, 1] (a file with an all-integer colour
+// above 1 is in bytes: its all-integer colours are divided by 255; alpha, 1 when absent, is
+// scaled alike and clamped into [0, 1]; 4 components if any vertex has alpha), texture
+// coordinates as TEXCOORD_0. Face colours are checked but not kept: a strip has no faces of the
+// file's to carry them to.
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <sstream>
@@ -23,9 +32,19 @@ namespace singlestrip::io_detail {
 namespace {
 
 struct Variant {
-    bool colours = false, normals = false;
+    bool colours = false, normals = false, textures = false;
     std::string keyword;
 };
+
+/// One vertex colour as written: r g b [a] and whether alpha was there.
+struct RawColour {
+    double c[4] = {0, 0, 0, 1};
+    bool alpha = false;
+};
+
+bool integral(double x) {
+    return std::floor(x) == x;
+}
 
 std::string number_text(double x) {
     std::ostringstream o;
@@ -99,6 +118,7 @@ private:
     void ascii_faces(unsigned long long nf);
     void face_colour(Line& l, uint64_t f);
     void binary_body();
+    void keep_attributes();
 
     const std::string& path_;
     std::string_view d_;
@@ -107,6 +127,9 @@ private:
     Variant v_;
     std::size_t line_ = 0;
     std::vector<uint32_t> corners_;
+    std::vector<RawColour> colours_;
+    VertexAttribute normals_{"NORMAL", 3, AttributeBlend::Unit, {}};
+    VertexAttribute texcoords_{"TEXCOORD_0", 2, AttributeBlend::Linear, {}};
 };
 
 unsigned long long OffReader::header_count(const char* what) {
@@ -124,7 +147,7 @@ TriangleSoup OffReader::run() {
     skip_comments();
     const std::string kw(c_.token());
     std::size_t j = kw.substr(0, 2) == "ST" ? 2 : 0;
-    const bool textures = j == 2;
+    v_.textures = j == 2;
     v_.colours = j < kw.size() && kw[j] == 'C';
     j += v_.colours;
     v_.normals = j < kw.size() && kw[j] == 'N';
@@ -134,15 +157,18 @@ TriangleSoup OffReader::run() {
     const bool dimensional = j < kw.size() && kw[j] == 'n';
     j += dimensional;
     v_.keyword = kw;
-    if (kw.substr(j) != "OFF") fail(path_, "not an OFF file (it starts with " + quoted(kw) + ", not OFF, COFF, NOFF or CNOFF)");
-    if (textures || homogeneous || dimensional)
-        fail(path_, "unsupported OFF variant '" + kw +
-                        "' (texture, homogeneous or n-dimensional coordinates); plain OFF, COFF, NOFF and CNOFF are read");
+    if (kw.substr(j) != "OFF")
+        fail(path_, "not an OFF file (it starts with " + quoted(kw) + ", not OFF or one of its [ST][C][N]OFF variants)");
+    if (homogeneous || dimensional)
+        fail(path_, "unsupported OFF variant '" + kw + "' (homogeneous or n-dimensional coordinates); [ST][C][N]OFF is read");
     skip_comments();
     if (c_.end - c_.p >= 6 && std::string_view(c_.p, 6) == "BINARY") {
+        if (v_.textures)
+            fail(path_, "unsupported OFF variant '" + kw + " BINARY' (texture coordinates in a binary OFF); ASCII " + kw + " is read");
         c_.p += 6;
         c_.next_line();
         binary_body();
+        keep_attributes();
         return out_.finish("the file has " + std::to_string(out_.soup.points.size()) + " vertices and 0 faces");
     }
     const unsigned long long nv = header_count("vertex");
@@ -151,39 +177,69 @@ TriangleSoup OffReader::run() {
     if (nv >= 0xffffffffull) fail(path_, "too many vertices (the header declares " + std::to_string(nv) + "; at most 2^32-2)");
     ascii_vertices(nv);
     ascii_faces(nf);
+    keep_attributes();
     return out_.finish("the file has " + std::to_string(nv) + " vertices and 0 faces");
 }
 
 void OffReader::ascii_vertices(unsigned long long nv) {
     // A vertex line holds at least "0 0 0" (6 bytes with its newline).
     out_.soup.points.reserve(fit(d_.size(), 6, nv));
-    const std::size_t base = v_.normals ? 6 : 3;
+    const std::size_t base = v_.normals ? 6 : 3, texture_numbers = v_.textures ? 2 : 0;
     for (unsigned long long v = 0; v < nv; ++v) {
         Line l{};
         if (!data_line(l))
             fail(path_,
                  "truncated OFF file: header declares " + std::to_string(nv) + " vertices but only " + std::to_string(v) + " were found");
-        Point3 p{};
-        double extra[4] = {0, 0, 0, 0};
+        double x[12] = {};  // x y z, nx ny nz, r g b a, s t: the most a vertex line holds
         std::size_t n = 0;
-        const std::size_t want = v_.colours || v_.normals ? SIZE_MAX : 3;
+        const std::size_t want = v_.colours || v_.normals || v_.textures ? SIZE_MAX : 3;
         for (std::string_view t; n < want && !(t = l.token()).empty(); ++n) {
-            double x = 0;
-            if (!parse_real(t, x)) fail_line("vertex " + std::to_string(v) + " " + coordinate_problem(t));
-            if (n < 3)
-                p[n] = x;
-            else if (n >= base && n < base + 4)
-                extra[n - base] = x;
+            double y = 0;
+            if (!parse_real(t, y)) fail_line("vertex " + std::to_string(v) + " " + coordinate_problem(t));
+            if (n < 12) x[n] = y;
         }
         if (n < 3) fail_line("vertex " + std::to_string(v) + " has fewer than 3 coordinates");
-        const bool counted = v_.colours ? (n == base + 3 || n == base + 4) : (!v_.normals || n == base);
+        const std::size_t colour_numbers = n - base - texture_numbers;  // wraps around when n is too small: refused below
+        const bool counted = v_.colours ? n >= base + texture_numbers && (colour_numbers == 3 || colour_numbers == 4)
+                                        : (want == 3 || n == base + texture_numbers);
         if (!counted)
             fail_line("vertex " + std::to_string(v) + " has " + std::to_string(n) + " numbers; a " + v_.keyword + " vertex needs " +
-                      std::to_string(base) + (v_.colours ? " plus 3 or 4 colour components" : ""));
-        if (v_.colours)
-            if (const std::string why = colour_problem(extra); !why.empty()) fail_line("vertex " + std::to_string(v) + ": " + why);
-        out_.soup.points.push_back(p);
+                      std::to_string(base) + (v_.colours ? " plus 3 or 4 colour components" : "") +
+                      (v_.textures ? " plus 2 texture coordinates" : ""));
+        if (v_.colours) {
+            if (const std::string why = colour_problem(x + base); !why.empty()) fail_line("vertex " + std::to_string(v) + ": " + why);
+            RawColour c;
+            std::copy(x + base, x + base + colour_numbers, c.c);
+            c.alpha = colour_numbers == 4;
+            colours_.push_back(c);
+        }
+        if (v_.normals) normals_.values.insert(normals_.values.end(), x + 3, x + 6);
+        if (v_.textures) texcoords_.values.insert(texcoords_.values.end(), x + n - 2, x + n);
+        out_.soup.points.push_back({x[0], x[1], x[2]});
     }
+}
+
+/// The attributes read, in the PLY reader's order (NORMAL, COLOR_0, TEXCOORD_0); colours scaled
+/// to [0, 1] by the file-wide rule of the header comment.
+void OffReader::keep_attributes() {
+    if (v_.normals) out_.soup.attributes.push_back(std::move(normals_));
+    if (v_.colours) {
+        auto whole = [](const RawColour& c) { return integral(c.c[0]) && integral(c.c[1]) && integral(c.c[2]); };
+        bool bytes = false, alpha = false;
+        for (const RawColour& c : colours_) {
+            bytes = bytes || (whole(c) && std::max({c.c[0], c.c[1], c.c[2]}) > 1);
+            alpha = alpha || c.alpha;
+        }
+        VertexAttribute a{"COLOR_0", alpha ? 4u : 3u, AttributeBlend::Linear, {}};
+        a.values.reserve(colours_.size() * a.components);
+        for (const RawColour& c : colours_) {
+            const double scale = bytes && whole(c) ? 1.0 / 255 : 1.0;
+            for (uint32_t k = 0; k < a.components; ++k)
+                a.values.push_back(k < 3 ? c.c[k] * scale : std::clamp(c.alpha ? c.c[3] * scale : 1.0, 0.0, 1.0));
+        }
+        out_.soup.attributes.push_back(std::move(a));
+    }
+    if (v_.textures) out_.soup.attributes.push_back(std::move(texcoords_));
 }
 
 void OffReader::ascii_faces(unsigned long long nf) {
@@ -265,6 +321,16 @@ void OffReader::binary_body() {
             if (!std::isfinite(x)) fail(path_, "binary OFF vertex " + std::to_string(v) + " has a non-finite coordinate (NaN or infinity)");
             pts[static_cast<std::size_t>(v)][static_cast<std::size_t>(k)] = x;
         }
+    if (v_.normals) {
+        normals_.values.resize(3 * static_cast<std::size_t>(nv));
+        for (std::size_t i = 0; i < normals_.values.size(); ++i) {
+            const uint32_t u = be32(c_.p + 12 + (i / 3) * stride + 12 + 4 * (i % 3));
+            float x = 0;
+            std::memcpy(&x, &u, 4);
+            if (!std::isfinite(x)) fail(path_, "binary OFF vertex " + std::to_string(i / 3) + " has a non-finite normal (NaN or infinity)");
+            normals_.values[i] = x;
+        }
+    }
     out_.reserve_triangles(static_cast<std::size_t>(nf));
     for (int32_t f = 0; f < nf; ++f) {
         auto face = [f] { return "binary OFF face " + std::to_string(f); };

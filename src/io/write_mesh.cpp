@@ -198,14 +198,31 @@ void write_obj(std::ostream& out, const std::vector<Point3>& points, const std::
     }
 }
 
-void write_off(std::ostream& out, const std::vector<Point3>& points, const std::vector<Triangle>& faces) {
-    out << "OFF\n" << points.size() << ' ' << faces.size() << " 0\n";
-    for (const auto& p : points) {
-        put_double(out, p[0]);
-        out << ' ';
-        put_double(out, p[1]);
-        out << ' ';
-        put_double(out, p[2]);
+/// [ST][C][N]OFF: a vertex line is x y z [nx ny nz] [r g b [a]] [s t] (Geomview's order), colours
+/// as fractions clamped into [0, 1] (the reader takes integers above 1 for bytes).
+void write_off(std::ostream& out, const std::vector<Point3>& points, const std::vector<Triangle>& faces,
+               const std::vector<VertexAttribute>& attrs) {
+    const VertexAttribute* n = find_attribute(attrs, "NORMAL");
+    const VertexAttribute* rgb = find_attribute(attrs, "COLOR_0");
+    const VertexAttribute* st = find_attribute(attrs, "TEXCOORD_0");
+    if (n && n->components != 3) n = nullptr;
+    if (rgb && rgb->components != 3 && rgb->components != 4) rgb = nullptr;
+    if (st && st->components != 2) st = nullptr;
+    out << (st ? "ST" : "") << (rgb ? "C" : "") << (n ? "N" : "") << "OFF\n" << points.size() << ' ' << faces.size() << " 0\n";
+    for (std::size_t v = 0; v < points.size(); ++v) {
+        double x[12];
+        std::size_t k = 0;
+        for (double c : points[v]) x[k++] = c;
+        if (n)
+            for (std::size_t c = 0; c < 3; ++c) x[k++] = n->values[3 * v + c];
+        if (rgb)
+            for (std::size_t c = 0; c < rgb->components; ++c) x[k++] = std::clamp(rgb->values[rgb->components * v + c], 0.0, 1.0);
+        if (st)
+            for (std::size_t c = 0; c < 2; ++c) x[k++] = st->values[2 * v + c];
+        for (std::size_t i = 0; i < k; ++i) {
+            if (i) out << ' ';
+            put_double(out, x[i]);
+        }
         out << '\n';
     }
     for (const auto& t : faces) out << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
@@ -237,7 +254,7 @@ void write_strip_mesh(const std::string& path, const std::vector<Point3>& points
                 write_binary_stl(out, points, faces);
                 break;
             case OutputFormat::Off:
-                write_off(out, points, faces);
+                write_off(out, points, faces, attributes);
                 break;
         }
     });

@@ -20,6 +20,7 @@
 #include "singlestrip/errors.hpp"
 #include "singlestrip/io.hpp"
 #include "singlestrip/verify.hpp"
+#include "verify_attributes.hpp"
 
 namespace singlestrip {
 namespace {
@@ -1409,6 +1410,9 @@ VerifyReport verify(const VerifyInput& in) {
     check_topology(inp, out, fails, report);
     Checked chk{in, inp, out, resolve_parents(in, out, fails), fails, report};
     check_geometry(chk);
+    std::vector<std::string> attribute_failures;
+    verify_detail::check_attributes(in, chk.parent, attribute_failures, report.notes);
+    for (const std::string& f : attribute_failures) fails.add("attributes", f);
     check_boundary_tiling(chk);
     size_t num_components = 0;
     const std::vector<uint32_t> strip_end = check_strips(chk, num_components);

@@ -11,6 +11,7 @@
 #include "singlestrip/repair.hpp"
 #include "singlestrip/validate.hpp"
 #include "singlestrip/verify.hpp"
+#include "verify_attributes.hpp"
 
 namespace singlestrip {
 namespace {
@@ -45,6 +46,7 @@ std::vector<std::string> replay_input_steps(VerifyInput& vi, const InputSteps& s
     }
     vi.in_points = std::move(input.points);
     vi.in_faces = std::move(input.triangles);
+    vi.in_attributes = std::move(input.attributes);  // with repair's copies appended
     // A parent naming a dropped or unknown input face maps past the end: verify() reports it.
     if (!face_of_input.empty())
         for (uint32_t& p : vi.out_parent) p = p < face_of_input.size() && face_of_input[p] != kNo ? face_of_input[p] : kNo - 1;
@@ -87,8 +89,10 @@ VerifyReport verify_files(TriangleSoup input, const std::string& out_path, const
         vi.out_points = std::move(om.points);
         vi.out_faces = std::move(om.faces);
         vi.out_parent = std::move(om.parent);
+        vi.out_attributes = std::move(om.attributes);
     }
-    const std::vector<std::string> notes = replay_input_steps(vi, options.steps, std::move(input.attributes));
+    std::vector<std::string> notes = replay_input_steps(vi, options.steps, std::move(input.attributes));
+    if (is_gltf_path(out_path)) verify_detail::read_gltf_strip_attributes(out_path, vi, notes);
     if (options.indices_path) vi.indices = read_index_file(*options.indices_path);
     if (options.constraints_path)
         vi.constraints =

@@ -1,6 +1,8 @@
 // verify_gltf_scene(): a glTF scene stripped primitive by primitive, checked primitive by
 // primitive with the independent verify() (verify.hpp). Reading the two files and rebuilding the
 // input primitive as the strip saw it use the library's glTF reader.
+#include <cctype>
+#include <cmath>
 #include <string>
 #include <utility>
 #include <vector>
@@ -8,9 +10,35 @@
 #include "io/gltf_access.hpp"
 #include "singlestrip/errors.hpp"
 #include "singlestrip/verify.hpp"
+#include "verify_attributes.hpp"
 
 namespace singlestrip {
 namespace {
+
+/// How the scene rewriter carries glTF attribute `name` (docs: skin influences and integer
+/// custom attributes are copied from one corner; normals and tangents renormalised).
+AttributeBlend gltf_blend(const std::string& name, const gltf_detail::AccessorData& d) {
+    if (name == "NORMAL" || name == "TANGENT") return AttributeBlend::Unit;
+    if (name.rfind("JOINTS_", 0) == 0 || name.rfind("WEIGHTS_", 0) == 0) return AttributeBlend::Nearest;
+    if (name.rfind('_', 0) == 0 && d.component_type != TINYGLTF_COMPONENT_TYPE_FLOAT && !d.normalized) return AttributeBlend::Nearest;
+    return AttributeBlend::Linear;
+}
+
+/// The attributes both primitives have, as verify() compares them: float32 values (glTF).
+std::vector<VertexAttribute> shared_attributes(const tinygltf::Model& in, const tinygltf::Primitive& ip, const tinygltf::Model& out,
+                                               const tinygltf::Primitive& op, VerifyInput& vi, const std::string& name) {
+    std::vector<VertexAttribute> in_attrs;
+    for (const auto& [attr, index] : ip.attributes) {
+        if (attr == "POSITION" || !op.attributes.count(attr)) continue;
+        const gltf_detail::AccessorData a = gltf_detail::read_accessor(in, index, name);
+        const gltf_detail::AccessorData b = gltf_detail::read_accessor(out, op.attributes.at(attr), name);
+        const auto k = static_cast<uint32_t>(a.components);
+        in_attrs.push_back({attr, k, gltf_blend(attr, a), std::vector<double>(a.values.begin(), a.values.end())});
+        vi.out_attributes.push_back({attr, static_cast<uint32_t>(b.components), std::vector<double>(b.values.begin(), b.values.end()), 1e-6,
+                                     1e-6, "glTF, float32 tolerance"});
+    }
+    return in_attrs;
+}
 
 /// verify() of one stripped primitive; fills `vi` from the two models.
 VerifyReport verify_primitive(const tinygltf::Model& in, const tinygltf::Primitive& ip, const tinygltf::Model& out,
@@ -31,7 +59,8 @@ VerifyReport verify_primitive(const tinygltf::Model& in, const tinygltf::Primiti
     InputSteps s = steps;
     s.repair_weld = false;  // glTF primitives are never welded across attribute seams
     s.weld = false;
-    const std::vector<std::string> notes = replay_input_steps(vi, s);
+    std::vector<VertexAttribute> in_attrs = shared_attributes(in, ip, out, op, vi, name);
+    const std::vector<std::string> notes = replay_input_steps(vi, s, std::move(in_attrs));
     VerifyReport r = verify(vi);
     r.notes.insert(r.notes.begin(), notes.begin(), notes.end());
     return r;
@@ -51,6 +80,38 @@ void add(VerifyReport& total, const VerifyReport& r, const std::string& who) {
 }
 
 }  // namespace
+
+namespace verify_detail {
+
+void read_gltf_strip_attributes(const std::string& path, VerifyInput& vi, std::vector<std::string>& notes) {
+    const tinygltf::Model m = gltf_detail::load_model(path);
+    if (m.meshes.empty() || m.meshes[0].primitives.empty()) return;
+    auto custom = [](const std::string& name) {  // the writer's "_NAME" for a name glTF does not know
+        std::string c = "_" + name;
+        for (char& ch : c) ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
+        return c;
+    };
+    for (const auto& [attr, index] : m.meshes[0].primitives[0].attributes) {
+        if (attr == "POSITION") continue;
+        std::string name = attr;
+        for (const VertexAttribute& a : vi.in_attributes)
+            if (a.name != attr && custom(a.name) == attr) name = a.name;
+        const gltf_detail::AccessorData d = gltf_detail::read_accessor(m, index, path);
+        vi.out_attributes.push_back({name, static_cast<uint32_t>(d.components), std::vector<double>(d.values.begin(), d.values.end()), 1e-6,
+                                     1e-6, "glTF, float32 tolerance"});
+    }
+    for (VertexAttribute& a : vi.in_attributes) {
+        if (a.name != "NORMAL" || a.components != 3) continue;
+        for (std::size_t v = 0; 3 * v + 2 < a.values.size(); ++v) {
+            double* n = &a.values[3 * v];
+            const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+            for (int c = 0; c < 3; ++c) n[c] = len > 0 ? n[c] / len : (c == 2 ? 1.0 : 0.0);
+        }
+        notes.push_back("attributes: the input's NORMAL compared normalised (glTF holds unit normals)");
+    }
+}
+
+}  // namespace verify_detail
 
 VerifyReport verify_gltf_scene(const std::string& in_path, const std::string& out_path, const InputSteps& steps) {
     const tinygltf::Model in = gltf_detail::load_model(in_path), out = gltf_detail::load_model(out_path);

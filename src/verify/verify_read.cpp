@@ -90,6 +90,12 @@ std::vector<std::string_view> split_lines(std::string_view text) {
     return lines;
 }
 
+const OutputAttribute* find_output_attribute(const std::vector<OutputAttribute>& attrs, const std::string& name) {
+    for (const OutputAttribute& a : attrs)
+        if (a.name == name) return &a;
+    return nullptr;
+}
+
 void check_point(const std::string& path, size_t v, const Point3& p) {
     for (double c : p)
         if (!std::isfinite(c)) fail(path, "vertex " + std::to_string(v) + " has a non-finite coordinate");
@@ -244,6 +250,141 @@ uint32_t as_index(const std::string& path, double v, const std::string& where) {
     return static_cast<uint32_t>(v);
 }
 
+/// How exactly a PLY property of type `t` holds a value (a colour in integers is a fraction of
+/// the type's largest value).
+void set_storage(OutputAttribute& a, PlyType t, bool colour) {
+    if (t == PlyType::F64) return;
+    if (t == PlyType::F32) {
+        a.abs_tol = 1e-7, a.rel_tol = 1e-6, a.storage = "float32";
+        return;
+    }
+    a.rel_tol = 0;
+    a.abs_tol = colour ? 0.5 / (t == PlyType::U16 ? 65535 : 255) + 1e-12 : 0.5;
+    a.storage = colour ? (t == PlyType::U16 ? "16-bit" : "8-bit") : "integer";
+}
+
+/// The vertex properties besides x y z as attributes, grouped under the names the PLY writer
+/// uses: nx ny nz (NORMAL), red green blue [alpha] (COLOR_0), s t / u v (TEXCOORD_0), n_0 n_1 ...
+/// (n, several components); any other property is an attribute of its own.
+std::vector<OutputAttribute> ply_attributes(const std::vector<PlyProperty>& props, std::vector<std::vector<double>>& columns,
+                                            const std::array<int, 3>& xyz) {
+    std::vector<char> used(props.size(), 0);
+    for (int i : xyz) used[static_cast<size_t>(i)] = 1;
+    for (size_t i = 0; i < props.size(); ++i) used[i] = used[i] || props[i].is_list;
+    auto column = [&](const std::string& name) -> int {
+        for (size_t i = 0; i < props.size(); ++i)
+            if (!used[i] && props[i].name == name) return static_cast<int>(i);
+        return -1;
+    };
+    std::vector<OutputAttribute> out;
+    auto take = [&](const std::string& name, const std::vector<int>& cols) {
+        OutputAttribute a{name, static_cast<uint32_t>(cols.size()), {}};
+        const PlyType t = props[static_cast<size_t>(cols[0])].type;
+        const bool colour = name == "COLOR_0" && t != PlyType::F32 && t != PlyType::F64;
+        const double scale = !colour ? 1.0 : t == PlyType::U16 ? 1.0 / 65535 : 1.0 / 255;
+        set_storage(a, t, colour);
+        const size_t n = columns[static_cast<size_t>(cols[0])].size();
+        a.values.resize(n * cols.size());
+        for (size_t v = 0; v < n; ++v)
+            for (size_t c = 0; c < cols.size(); ++c) a.values[v * cols.size() + c] = columns[static_cast<size_t>(cols[c])][v] * scale;
+        for (int c : cols) used[static_cast<size_t>(c)] = 1;
+        out.push_back(std::move(a));
+    };
+    const std::vector<std::pair<std::string, std::vector<std::string>>> groups{{"NORMAL", {"nx", "ny", "nz"}},
+                                                                               {"COLOR_0", {"red", "green", "blue", "alpha"}},
+                                                                               {"COLOR_0", {"red", "green", "blue"}},
+                                                                               {"TEXCOORD_0", {"s", "t"}},
+                                                                               {"TEXCOORD_0", {"u", "v"}},
+                                                                               {"TEXCOORD_0", {"texture_u", "texture_v"}},
+                                                                               {"TEXCOORD_0", {"texture_s", "texture_t"}}};
+    for (const auto& [name, names] : groups) {
+        std::vector<int> cols;
+        for (const std::string& n : names) cols.push_back(column(n));
+        if (std::find(cols.begin(), cols.end(), -1) == cols.end() && !find_output_attribute(out, name)) take(name, cols);
+    }
+    for (size_t i = 0; i < props.size(); ++i) {
+        if (used[i]) continue;
+        const std::string& n = props[i].name;
+        std::vector<int> cols{static_cast<int>(i)};
+        if (n.size() > 2 && n.compare(n.size() - 2, 2, "_0") == 0) {  // name_0 name_1 ...: one attribute of several components
+            const std::string base = n.substr(0, n.size() - 2);
+            for (int c = 1; column(base + "_" + std::to_string(c)) >= 0; ++c) cols.push_back(column(base + "_" + std::to_string(c)));
+            if (cols.size() > 1) {
+                take(base, cols);
+                continue;
+            }
+        }
+        take(n, cols);
+    }
+    return out;
+}
+
+/// The `vertex` element: positions, and every other scalar property as an attribute.
+void read_ply_vertices(const std::string& path, const PlyElement& el, PlySource& src, size_t data_size, OutputMesh& m) {
+    int ix = -1, iy = -1, iz = -1;
+    for (size_t i = 0; i < el.props.size(); ++i) {
+        if (el.props[i].is_list) continue;
+        if (el.props[i].name == "x") ix = static_cast<int>(i);
+        if (el.props[i].name == "y") iy = static_cast<int>(i);
+        if (el.props[i].name == "z") iz = static_cast<int>(i);
+    }
+    if (ix < 0 || iy < 0 || iz < 0) fail(path, "vertex element lacks x, y or z");
+    if (el.count > data_size + 1) fail(path, "vertex count exceeds the file size (truncated?)");
+    m.points.resize(el.count);
+    std::vector<std::vector<double>> columns(el.props.size());  // scalar properties besides x y z
+    for (size_t v = 0; v < el.count; ++v) {
+        const std::string where = "vertex " + std::to_string(v);
+        for (size_t i = 0; i < el.props.size(); ++i) {
+            const PlyProperty& p = el.props[i];
+            if (p.is_list) {
+                const double k = src.next(p.count_type, where);
+                const uint32_t kk = as_index(path, k, where);
+                for (uint32_t j = 0; j < kk; ++j) src.next(p.type, where);
+                continue;
+            }
+            const double val = src.next(p.type, where);
+            if (static_cast<int>(i) == ix) m.points[v][0] = val;
+            if (static_cast<int>(i) == iy) m.points[v][1] = val;
+            if (static_cast<int>(i) == iz) m.points[v][2] = val;
+            if (static_cast<int>(i) != ix && static_cast<int>(i) != iy && static_cast<int>(i) != iz) columns[i].push_back(val);
+        }
+        check_point(path, v, m.points[v]);
+    }
+    m.attributes = ply_attributes(el.props, columns, {ix, iy, iz});
+}
+
+/// The `face` element: triangles (`vertex_indices`) and the optional `parent` of each.
+void read_ply_faces(const std::string& path, const PlyElement& el, PlySource& src, size_t data_size, OutputMesh& m) {
+    int ilist = -1, iparent = -1;
+    for (size_t i = 0; i < el.props.size(); ++i) {
+        const PlyProperty& p = el.props[i];
+        if (p.is_list && (p.name == "vertex_indices" || p.name == "vertex_index")) ilist = static_cast<int>(i);
+        if (!p.is_list && p.name == "parent") iparent = static_cast<int>(i);
+    }
+    if (ilist < 0) fail(path, "face element lacks a vertex_indices list");
+    if (el.count > data_size + 1) fail(path, "face count exceeds the file size (truncated?)");
+    m.faces.resize(el.count);
+    if (iparent >= 0) m.parent.resize(el.count);
+    for (size_t f = 0; f < el.count; ++f) {
+        const std::string where = "face " + std::to_string(f);
+        for (size_t i = 0; i < el.props.size(); ++i) {
+            const PlyProperty& p = el.props[i];
+            if (p.is_list) {
+                const uint32_t k = as_index(path, src.next(p.count_type, where), where);
+                if (static_cast<int>(i) == ilist && k != 3)
+                    fail(path, where + " has " + std::to_string(k) + " vertices, expected a triangle");
+                for (uint32_t j = 0; j < k; ++j) {
+                    const double val = src.next(p.type, where);
+                    if (static_cast<int>(i) == ilist) m.faces[f][j] = as_index(path, val, where);
+                }
+                continue;
+            }
+            const double val = src.next(p.type, where);
+            if (static_cast<int>(i) == iparent) m.parent[f] = as_index(path, val, where + " parent");
+        }
+    }
+}
+
 OutputMesh read_ply(const std::string& path) {
     const std::string text = slurp(path);
     if (text.empty()) fail(path, "empty file");
@@ -301,63 +442,10 @@ OutputMesh read_ply(const std::string& path) {
     for (const PlyElement& el : elements) {
         if (el.name == "vertex") {
             have_vertex = true;
-            int ix = -1, iy = -1, iz = -1;
-            for (size_t i = 0; i < el.props.size(); ++i) {
-                if (el.props[i].is_list) continue;
-                if (el.props[i].name == "x") ix = static_cast<int>(i);
-                if (el.props[i].name == "y") iy = static_cast<int>(i);
-                if (el.props[i].name == "z") iz = static_cast<int>(i);
-            }
-            if (ix < 0 || iy < 0 || iz < 0) fail(path, "vertex element lacks x, y or z");
-            if (el.count > data_size + 1) fail(path, "vertex count exceeds the file size (truncated?)");
-            m.points.resize(el.count);
-            for (size_t v = 0; v < el.count; ++v) {
-                const std::string where = "vertex " + std::to_string(v);
-                for (size_t i = 0; i < el.props.size(); ++i) {
-                    const PlyProperty& p = el.props[i];
-                    if (p.is_list) {
-                        const double k = src.next(p.count_type, where);
-                        const uint32_t kk = as_index(path, k, where);
-                        for (uint32_t j = 0; j < kk; ++j) src.next(p.type, where);
-                        continue;
-                    }
-                    const double val = src.next(p.type, where);
-                    if (static_cast<int>(i) == ix) m.points[v][0] = val;
-                    if (static_cast<int>(i) == iy) m.points[v][1] = val;
-                    if (static_cast<int>(i) == iz) m.points[v][2] = val;
-                }
-                check_point(path, v, m.points[v]);
-            }
+            read_ply_vertices(path, el, src, data_size, m);
         } else if (el.name == "face") {
             have_face = true;
-            int ilist = -1, iparent = -1;
-            for (size_t i = 0; i < el.props.size(); ++i) {
-                const PlyProperty& p = el.props[i];
-                if (p.is_list && (p.name == "vertex_indices" || p.name == "vertex_index")) ilist = static_cast<int>(i);
-                if (!p.is_list && p.name == "parent") iparent = static_cast<int>(i);
-            }
-            if (ilist < 0) fail(path, "face element lacks a vertex_indices list");
-            if (el.count > data_size + 1) fail(path, "face count exceeds the file size (truncated?)");
-            m.faces.resize(el.count);
-            if (iparent >= 0) m.parent.resize(el.count);
-            for (size_t f = 0; f < el.count; ++f) {
-                const std::string where = "face " + std::to_string(f);
-                for (size_t i = 0; i < el.props.size(); ++i) {
-                    const PlyProperty& p = el.props[i];
-                    if (p.is_list) {
-                        const uint32_t k = as_index(path, src.next(p.count_type, where), where);
-                        if (static_cast<int>(i) == ilist && k != 3)
-                            fail(path, where + " has " + std::to_string(k) + " vertices, expected a triangle");
-                        for (uint32_t j = 0; j < k; ++j) {
-                            const double val = src.next(p.type, where);
-                            if (static_cast<int>(i) == ilist) m.faces[f][j] = as_index(path, val, where);
-                        }
-                        continue;
-                    }
-                    const double val = src.next(p.type, where);
-                    if (static_cast<int>(i) == iparent) m.parent[f] = as_index(path, val, where + " parent");
-                }
-            }
+            read_ply_faces(path, el, src, data_size, m);
         } else {
             // Unknown element: read and discard its values.
             for (size_t r = 0; r < el.count; ++r) {
@@ -381,11 +469,66 @@ OutputMesh read_ply(const std::string& path) {
 // ---------------------------------------------------------------------------------------------
 // OBJ
 
+/// One OBJ record of numbers ("vt u v", "vn x y z"): its first `k` numbers.
+std::vector<double> obj_numbers(const std::string& path, const std::vector<std::string_view>& tok, size_t k, const std::string& where) {
+    if (tok.size() < k + 1) fail(path, where + ": '" + std::string(tok[0]) + "' needs " + std::to_string(k) + " numbers");
+    std::vector<double> x(k);
+    for (size_t i = 0; i < k; ++i)
+        if (!parse_double(tok[i + 1], x[i]) || !std::isfinite(x[i])) fail(path, where + ": bad number '" + std::string(tok[i + 1]) + "'");
+    return x;
+}
+
+/// An OBJ index (1-based, or negative: relative to the `count` records read so far) as 0-based.
+long long obj_index(long long idx, size_t count) {
+    return idx > 0 ? idx - 1 : static_cast<long long>(count) + idx;
+}
+
+/// The per-vertex attribute of one OBJ index stream (vt or vn): vertex v takes the record its
+/// corners name; every corner must name one (else no attribute) and all of v's the same one.
+struct ObjStream {
+    const char* name;
+    size_t width;
+    std::vector<double> records;                   // width numbers per record
+    std::vector<std::array<long long, 3>> corner;  // raw index per face corner, 0 = none
+    std::vector<size_t> count_at;                  // records read when the face was read
+};
+
+void obj_stream_attribute(const std::string& path, const ObjStream& st, const OutputMesh& m, std::vector<OutputAttribute>& out) {
+    const size_t n_rec = st.records.size() / st.width;
+    for (const auto& c : st.corner)
+        for (long long x : c)
+            if (x == 0) return;  // a corner without one: the stream is not an attribute
+    if (st.corner.empty()) return;
+    OutputAttribute a{
+        st.name,       static_cast<uint32_t>(st.width), std::vector<double>(m.points.size() * st.width, std::nan("")), 1e-9, 1e-9,
+        "decimal text"};
+    std::vector<long long> given(m.points.size(), -1);
+    for (size_t f = 0; f < st.corner.size(); ++f)
+        for (size_t k = 0; k < 3; ++k) {
+            const long long r = obj_index(st.corner[f][k], st.count_at[f]);
+            if (r < 0 || static_cast<size_t>(r) >= n_rec)
+                fail(path, "face " + std::to_string(f) + " references " + st.name + " record " + std::to_string(st.corner[f][k]) +
+                               " but the file has " + std::to_string(n_rec));
+            const uint32_t v = m.faces[f][k];
+            if (given[v] >= 0 && given[v] != r &&
+                !std::equal(&st.records[static_cast<size_t>(r) * st.width], &st.records[static_cast<size_t>(r) * st.width] + st.width,
+                            &st.records[static_cast<size_t>(given[v]) * st.width]))
+                fail(path, "vertex " + std::to_string(v) + " is given two different " + st.name + " values by its corners (face " +
+                               std::to_string(f) + "); an output vertex has one");
+            given[v] = r;
+            std::copy_n(&st.records[static_cast<size_t>(r) * st.width], st.width, &a.values[v * st.width]);
+        }
+    out.push_back(std::move(a));
+}
+
 OutputMesh read_obj(const std::string& path) {
     const std::string text = slurp(path);
     OutputMesh m;
     std::vector<std::array<long long, 3>> raw;  // 1-based or negative, resolved below
     std::vector<size_t> nverts_at;              // vertex count when the face was read
+    ObjStream uv{"TEXCOORD_0", 2, {}, {}, {}}, nrm{"NORMAL", 3, {}, {}, {}};
+    std::vector<double> rgb;  // "v x y z r g b": only when every v has one
+    bool every_v_coloured = true;
     const auto lines = split_lines(text);
     for (size_t li = 0; li < lines.size(); ++li) {
         std::string_view line = lines[li];
@@ -401,26 +544,43 @@ OutputMesh read_obj(const std::string& path) {
                     fail(path, where + ": bad coordinate '" + std::string(tok[static_cast<size_t>(k) + 1]) + "'");
             check_point(path, m.points.size(), p);
             m.points.push_back(p);
+            every_v_coloured = every_v_coloured && tok.size() == 7;
+            if (every_v_coloured) {
+                const std::vector<double> c = obj_numbers(path, {tok.begin() + 3, tok.end()}, 3, where);
+                rgb.insert(rgb.end(), c.begin(), c.end());
+            }
+        } else if (tok[0] == "vt" || tok[0] == "vn") {
+            ObjStream& st = tok[0] == "vt" ? uv : nrm;
+            const std::vector<double> x = obj_numbers(path, tok, st.width, where);
+            st.records.insert(st.records.end(), x.begin(), x.end());
         } else if (tok[0] == "f") {
             if (tok.size() != 4)
                 fail(path, where + ": face " + std::to_string(raw.size()) + " has " + std::to_string(tok.size() - 1) +
                                " vertices, expected a triangle");
-            std::array<long long, 3> f{};
+            std::array<long long, 3> f{}, t{}, n{};
             for (size_t k = 0; k < 3; ++k) {
-                std::string_view t = tok[k + 1];
-                t = t.substr(0, t.find('/'));
-                if (!parse_long(t, f[k]) || f[k] == 0) fail(path, where + ": bad vertex index '" + std::string(tok[k + 1]) + "'");
+                const std::string_view full = tok[k + 1];
+                const size_t s1 = full.find('/'), s2 = s1 == std::string_view::npos ? s1 : full.find('/', s1 + 1);
+                auto index = [&](std::string_view part, long long& out) {
+                    if (part.empty()) return;  // "i//n": no texture coordinate
+                    if (!parse_long(part, out) || out == 0) fail(path, where + ": bad vertex index '" + std::string(full) + "'");
+                };
+                if (!parse_long(full.substr(0, s1), f[k]) || f[k] == 0)
+                    fail(path, where + ": bad vertex index '" + std::string(full) + "'");
+                if (s1 != std::string_view::npos) index(full.substr(s1 + 1, s2 == std::string_view::npos ? s2 : s2 - s1 - 1), t[k]);
+                if (s2 != std::string_view::npos) index(full.substr(s2 + 1), n[k]);
             }
             raw.push_back(f);
             nverts_at.push_back(m.points.size());
+            uv.corner.push_back(t), uv.count_at.push_back(uv.records.size() / 2);
+            nrm.corner.push_back(n), nrm.count_at.push_back(nrm.records.size() / 3);
         }
-        // vt, vn, g, o, s, usemtl, mtllib, l: irrelevant to the check.
+        // g, o, s, usemtl, mtllib, l: irrelevant to the check.
     }
     m.faces.resize(raw.size());
     for (size_t f = 0; f < raw.size(); ++f) {
         for (size_t k = 0; k < 3; ++k) {
-            long long idx = raw[f][k];
-            idx = idx > 0 ? idx - 1 : static_cast<long long>(nverts_at[f]) + idx;
+            const long long idx = obj_index(raw[f][k], nverts_at[f]);
             if (idx < 0 || idx >= static_cast<long long>(m.points.size()))
                 fail(path, "face " + std::to_string(f) + " references vertex " + std::to_string(raw[f][k]) + " but the file has only " +
                                std::to_string(m.points.size()) + " vertices");
@@ -428,11 +588,54 @@ OutputMesh read_obj(const std::string& path) {
         }
     }
     if (m.faces.empty()) fail(path, "no faces");
+    obj_stream_attribute(path, uv, m, m.attributes);
+    obj_stream_attribute(path, nrm, m, m.attributes);
+    if (every_v_coloured && !m.points.empty()) m.attributes.push_back({"COLOR_0", 3, std::move(rgb), 1e-9, 1e-9, "decimal text"});
     return m;
 }
 
 // ---------------------------------------------------------------------------------------------
 // OFF
+
+/// The attributes of OFF vertex rows "x y z [nx ny nz] [r g b [a]] [s t]". Colours: in a file
+/// with an all-integer colour above 1 the all-integer colours are bytes (/255), else fractions.
+std::vector<OutputAttribute> off_attributes(const std::string& path, const std::vector<std::vector<std::string_view>>& rows, bool nrm,
+                                            bool col, bool tex) {
+    OutputAttribute n{"NORMAL", 3, {}, 1e-9, 1e-9, "decimal text"}, c{"COLOR_0", 3, {}, 1e-9, 1e-9, "decimal text"},
+        t{"TEXCOORD_0", 2, {}, 1e-9, 1e-9, "decimal text"};
+    const size_t base = nrm ? 6 : 3, extra = tex ? 2 : 0;
+    std::vector<std::vector<double>> colours;
+    bool bytes = false;
+    for (size_t v = 0; v < rows.size(); ++v) {
+        const auto& row = rows[v];
+        const size_t k = row.size() < base + extra ? 0 : row.size() - base - extra;
+        if (row.size() < base + extra || (col ? k != 3 && k != 4 : k != 0))
+            fail(path, "vertex " + std::to_string(v) + " has " + std::to_string(row.size()) + " numbers, which does not fit its header");
+        std::vector<double> x(row.size());
+        for (size_t i = 3; i < row.size(); ++i)
+            if (!parse_double(row[i], x[i])) fail(path, "vertex " + std::to_string(v) + ": bad number '" + std::string(row[i]) + "'");
+        if (nrm) n.values.insert(n.values.end(), x.begin() + 3, x.begin() + 6);
+        if (tex) t.values.insert(t.values.end(), x.end() - 2, x.end());
+        if (!col) continue;
+        colours.emplace_back(x.begin() + static_cast<std::ptrdiff_t>(base), x.begin() + static_cast<std::ptrdiff_t>(base + k));
+        const auto& rgb = colours.back();
+        const bool whole = std::floor(rgb[0]) == rgb[0] && std::floor(rgb[1]) == rgb[1] && std::floor(rgb[2]) == rgb[2];
+        bytes = bytes || (whole && std::max({rgb[0], rgb[1], rgb[2]}) > 1);
+        c.components = std::max<uint32_t>(c.components, static_cast<uint32_t>(k));
+    }
+    for (const auto& rgb : colours) {
+        const bool whole = std::floor(rgb[0]) == rgb[0] && std::floor(rgb[1]) == rgb[1] && std::floor(rgb[2]) == rgb[2];
+        const double scale = bytes && whole ? 1.0 / 255 : 1.0;
+        for (size_t i = 0; i < c.components; ++i)
+            c.values.push_back(i < rgb.size() ? (i < 3 ? rgb[i] * scale : std::clamp(rgb[i] * scale, 0.0, 1.0)) : 1.0);
+    }
+    if (bytes) c.abs_tol = 0.5 / 255 + 1e-12, c.rel_tol = 0, c.storage = "8-bit";
+    std::vector<OutputAttribute> out;
+    if (nrm) out.push_back(std::move(n));
+    if (col) out.push_back(std::move(c));
+    if (tex) out.push_back(std::move(t));
+    return out;
+}
 
 OutputMesh read_off(const std::string& path) {
     const std::string text = slurp(path);
@@ -447,8 +650,10 @@ OutputMesh read_off(const std::string& path) {
     size_t r = 0;
     auto& head = rows[0];
     const std::string_view magic = head[0];
-    if (magic != "OFF" && magic != "COFF" && magic != "NOFF" && magic != "CNOFF")
-        fail(path, "not an OFF file (header '" + std::string(magic) + "')");
+    const bool tex = magic.substr(0, 2) == "ST";
+    const std::string_view rest = magic.substr(tex ? 2 : 0);
+    const bool col = rest.substr(0, 1) == "C", nrm = rest.substr(col ? 1 : 0) == "NOFF";
+    if (rest.substr((col ? 1 : 0) + (nrm ? 1 : 0)) != "OFF") fail(path, "not an OFF file (header '" + std::string(magic) + "')");
     std::vector<std::string_view> counts(head.begin() + 1, head.end());
     ++r;
     if (counts.empty()) {
@@ -468,6 +673,10 @@ OutputMesh read_off(const std::string& path) {
                 fail(path, "vertex " + std::to_string(v) + ": bad coordinate '" + std::string(rows[r][k]) + "'");
         check_point(path, v, m.points[v]);
     }
+    if (tex || col || nrm)
+        m.attributes = off_attributes(
+            path, {rows.begin() + static_cast<std::ptrdiff_t>(r - m.points.size()), rows.begin() + static_cast<std::ptrdiff_t>(r)}, nrm,
+            col, tex);
     m.faces.resize(static_cast<size_t>(nf));
     for (size_t f = 0; f < m.faces.size(); ++f, ++r) {
         if (r >= rows.size()) fail(path, "truncated at face " + std::to_string(f));

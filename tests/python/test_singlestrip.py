@@ -326,3 +326,124 @@ def test_repair_strips_every_broken_file_and_verifies(name):
     check = ss.verify(v, f, r, repair=True)
     assert check["ok"], check["text"]
     assert check["strips"] == r["report"]["strips"]
+
+
+# ---- vertex attributes -----------------------------------------------------------------------
+
+def grid_attributes(v):
+    """Texture coordinates, unit normals (not all equal) and an integer id per grid() vertex."""
+    n = np.stack([v[:, 0] - 2.5, v[:, 1] - 2.5, np.full(len(v), 3.0)], axis=1)
+    n /= np.linalg.norm(n, axis=1)[:, None]
+    return {"TEXCOORD_0": v[:, :2] / 5, "NORMAL": n, "part": np.arange(len(v)) % 5}
+
+
+def midpoint_ends(r, v, f):
+    """For every output vertex after the input's, the input edge (a, b) it is the midpoint of."""
+    out = {}
+    for face, parent in zip(r["faces"], r["parent"]):
+        tri = f[parent]
+        for w in face:
+            if w < len(v) or w in out:
+                continue
+            for a, b in ((tri[0], tri[1]), (tri[1], tri[2]), (tri[2], tri[0])):
+                if np.allclose(r["vertices"][w], (v[a] + v[b]) / 2, rtol=0, atol=1e-12):
+                    out[int(w)] = (int(a), int(b))
+    return out
+
+
+def test_strip_interpolates_attributes_at_midpoints():
+    v, f = grid(5)
+    attrs = grid_attributes(v)
+    r = ss.strip(v, f, attributes=attrs, blend={"part": "nearest"})
+    assert r["blend"] == {"TEXCOORD_0": "linear", "NORMAL": "unit", "part": "nearest"}
+    n_out = len(r["vertices"])
+    assert n_out > len(v), "this grid needs midpoint splits"
+    for name, a in attrs.items():
+        got = r["attributes"][name]
+        assert got.dtype == np.float64 and got.shape == (n_out, 2 if name == "TEXCOORD_0" else 3 if name == "NORMAL" else 1)
+        assert np.array_equal(got[:len(v)].reshape(len(v), -1), a.reshape(len(v), -1).astype(float)), name
+    ends = midpoint_ends(r, v, f)
+    assert len(ends) == n_out - len(v)
+    for w, (a, b) in ends.items():
+        assert np.allclose(r["attributes"]["TEXCOORD_0"][w], (attrs["TEXCOORD_0"][a] + attrs["TEXCOORD_0"][b]) / 2)
+        n = attrs["NORMAL"][a] + attrs["NORMAL"][b]
+        assert np.allclose(r["attributes"]["NORMAL"][w], n / np.linalg.norm(n))
+        assert r["attributes"]["part"][w, 0] in (attrs["part"][a], attrs["part"][b])
+    assert ss.verify(v, f, r)["ok"]
+
+
+def test_strip_without_attributes_returns_empty_dicts():
+    v, f = grid(2)
+    r = ss.strip(v, f)
+    assert r["attributes"] == {} and r["blend"] == {}
+    one = ss.strip(v, f, attributes={"q": np.arange(len(v), dtype=np.float32)})
+    assert one["attributes"]["q"].shape == (len(one["vertices"]), 1)
+
+
+def test_read_returns_the_files_attributes():
+    mesh = ss.read(os.path.join(DATA, "sphere_attrs.ply"), attributes=True)
+    assert set(mesh) == {"vertices", "faces", "attributes", "blend"}
+    n = len(mesh["vertices"])
+    a = mesh["attributes"]
+    assert a["NORMAL"].shape == (n, 3) and a["COLOR_0"].shape == (n, 4) and a["TEXCOORD_0"].shape == (n, 2)
+    assert a["quality"].shape == (n, 1) and a["id"].shape == (n, 1)
+    assert 0 <= a["COLOR_0"].min() and a["COLOR_0"].max() <= 1
+    assert mesh["blend"] == {"NORMAL": "unit", "COLOR_0": "linear", "TEXCOORD_0": "linear", "quality": "linear", "id": "nearest"}
+    r = ss.strip(**mesh)
+    assert set(r["attributes"]) == set(a)
+    assert np.array_equal(r["attributes"]["id"][:n], a["id"])
+    # Without the flag read() keeps its (V, F) pair.
+    v, f = ss.read(os.path.join(DATA, "sphere_attrs.ply"))
+    assert np.array_equal(v, mesh["vertices"]) and np.array_equal(f, mesh["faces"])
+
+
+def test_read_obj_seams_are_vertices_with_their_attributes():
+    mesh = ss.read(os.path.join(DATA, "sphere_uv.obj"), attributes=True)
+    uv = mesh["attributes"]["TEXCOORD_0"]
+    assert len(mesh["vertices"]) > 42 and uv.shape == (len(mesh["vertices"]), 2)
+    r = ss.strip(**mesh)
+    assert ss.verify(mesh["vertices"], mesh["faces"], r)["ok"]
+
+
+def test_read_gltf_gives_its_accessors():
+    mesh = ss.read(os.path.join(DATA, "scene.glb"), attributes=True)
+    assert "NORMAL" in mesh["attributes"] and mesh["blend"]["NORMAL"] == "unit"
+    assert all(x.shape[0] == len(mesh["vertices"]) for x in mesh["attributes"].values())
+
+
+def test_bad_attributes_are_refused_with_a_clear_message():
+    v, f = grid(2)
+    n = len(v)
+    with pytest.raises(TypeError, match="attributes must be a dict"):
+        ss.strip(v, f, attributes=[np.zeros(n)])
+    with pytest.raises(TypeError, match="every name must be a str"):
+        ss.strip(v, f, attributes={1: np.zeros(n)})
+    with pytest.raises(TypeError, match=r"attributes\['tag'\] must hold real numbers"):
+        ss.strip(v, f, attributes={"tag": np.array(["x"] * n)})
+    with pytest.raises(ValueError, match=r"attributes\['NORMAL'\] must have shape \(n,\) or \(n, k\) with n = 9.*\(8, 3\)"):
+        ss.strip(v, f, attributes={"NORMAL": np.zeros((n - 1, 3))})
+    bad = np.zeros((n, 2))
+    bad[4, 1] = np.nan
+    with pytest.raises(ValueError, match=r"attributes\['TEXCOORD_0'\]: vertex 4 has a non-finite value"):
+        ss.strip(v, f, attributes={"TEXCOORD_0": bad})
+    with pytest.raises(ValueError, match="choices: linear, unit, nearest"):
+        ss.strip(v, f, attributes={"q": np.zeros(n)}, blend={"q": "cubic"})
+    with pytest.raises(TypeError, match=r"blend\['q'\] must be a str"):
+        ss.strip(v, f, attributes={"q": np.zeros(n)}, blend={"q": 1})
+    with pytest.raises(ValueError, match="blend names 'w', which is not in attributes"):
+        ss.strip(v, f, attributes={"q": np.zeros(n)}, blend={"w": "linear"})
+
+
+def test_verify_checks_the_attribute_values():
+    v, f = grid(5)
+    attrs = grid_attributes(v)
+    blend = {"part": "nearest"}
+    r = ss.strip(v, f, attributes=attrs, blend=blend)
+    check = ss.verify(v, f, r, attributes=attrs, blend=blend)
+    assert check["ok"], check["text"]
+    assert any("attributes checked at every output vertex: TEXCOORD_0" in n for n in check["notes"])
+    w = len(v)  # the first midpoint
+    r["attributes"]["TEXCOORD_0"][w] += 0.01
+    bad = ss.verify(v, f, r, attributes=attrs, blend=blend)
+    assert not bad["ok"]
+    assert any(x.startswith(f"attributes: vertex {w} TEXCOORD_0 = (") and "expected" in x for x in bad["failures"]), bad["failures"]
