@@ -392,8 +392,7 @@ TEST(Reproducers, PipelineReproducersVerify) {
         req.orient = c.orient;
         if (c.seed) req.strip.seed_face = FaceId(*c.seed);
         if (!c.constraints.empty())
-            req.strip.constraint_edges =
-                vertex_pairs(read_constraints((dir / c.constraints).string(), static_cast<uint32_t>(soup.points.size())));
+            req.strip.constraint_edges = read_constraints((dir / c.constraints).string(), static_cast<uint32_t>(soup.points.size()));
         fuzzcheck::Outcome outcome;
         EXPECT_EQ(fuzzcheck::check_pipeline(std::move(soup), req, &outcome), "") << c.mesh;
         EXPECT_EQ(outcome, fuzzcheck::Outcome::Stripped) << c.mesh;
