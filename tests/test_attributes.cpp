@@ -14,11 +14,6 @@
 #include <string>
 #include <vector>
 
-#define TINYGLTF_NO_STB_IMAGE
-#define TINYGLTF_NO_STB_IMAGE_WRITE
-#define TINYGLTF_NO_EXTERNAL_IMAGE
-#include <tiny_gltf.h>
-
 #include "shell.hpp"
 #include "singlestrip/attributes.hpp"
 #include "singlestrip/errors.hpp"
@@ -28,6 +23,7 @@
 #include "singlestrip/repair.hpp"
 #include "singlestrip/validate.hpp"
 #include "singlestrip/verify.hpp"
+#include "tinygltf_read.hpp"
 
 using namespace singlestrip;
 namespace fs = std::filesystem;
