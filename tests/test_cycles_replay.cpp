@@ -18,9 +18,14 @@
 #include "singlestrip/verify.hpp"
 
 using namespace singlestrip;
-using singlestrip::testing::expect_closed_chains;
 
 namespace {
+
+/// Closed chains (cycle_check.hpp), each with its source.
+void expect_closed_chains(const StripResult& r, const Cycles& c, const std::string& what) {
+    ASSERT_EQ(c.cycles.size(), c.sources.size()) << what;
+    singlestrip::testing::expect_closed_chains(r, c, what);
+}
 
 long long expected_count(long long genus, long long loops) {
     return loops == 0 ? 2 * genus : 2 * genus + loops - 1;

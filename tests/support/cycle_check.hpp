@@ -9,7 +9,8 @@
 namespace singlestrip::testing {
 
 /// Every cycle of `c` is a closed chain of at least two edge-adjacent faces of r's output with no
-/// face twice, with a source and a positive finite length (gtest failures name `what`).
+/// face twice, with a positive finite length (gtest failures name `what`). Sources are not
+/// required (tree_cotree_cycles() gives none).
 void expect_closed_chains(const StripResult& r, const Cycles& c, const std::string& what);
 
 }  // namespace singlestrip::testing
