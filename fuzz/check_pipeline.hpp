@@ -130,7 +130,8 @@ inline std::string check_pipeline(TriangleSoup soup, const Request& req, Outcome
             if (stage == PipelineStage::Checks) return {};
             throw;
         } catch (const RequestError&) {
-            if (stage == PipelineStage::Strip) return {};
+            // A constraint pair that is not an edge is refused while the constraints are checked.
+            if (stage == PipelineStage::Strip || stage == PipelineStage::Constraints) return {};
             throw;
         }
         if (outcome) *outcome = Outcome::Stripped;

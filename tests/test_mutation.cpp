@@ -459,3 +459,17 @@ TEST(Reproducers, VerifierAcceptsAndStillChecksDegenerateParents) {
     p.out_parent = {0};
     EXPECT_FALSE(verify(p).ok());
 }
+
+TEST(Reproducers, ConstraintPairThatIsNotAnEdgeIsARefusalNotAFinding) {
+    // The fuzz targets pass random pairs; stripify() refuses one that is not an edge while it
+    // checks the constraints, and the harness must count that as a refusal.
+    TriangleSoup soup = read_mesh_file(std::string(SINGLESTRIP_SOURCE_DIR) + "/tests/data/tetra.off");
+    fuzzcheck::Request req;
+    req.strip.constraint_edges = {{0, 1}, {2, 2}};
+    fuzzcheck::Outcome outcome = fuzzcheck::Outcome::Stripped;
+    EXPECT_EQ(fuzzcheck::check_pipeline(soup, req, &outcome), "");
+    EXPECT_EQ(outcome, fuzzcheck::Outcome::Refused);
+    req.strip.constraint_edges = {{0, 1}};
+    EXPECT_EQ(fuzzcheck::check_pipeline(std::move(soup), req, &outcome), "");
+    EXPECT_EQ(outcome, fuzzcheck::Outcome::Stripped);
+}
