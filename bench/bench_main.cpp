@@ -237,7 +237,7 @@ std::string first_line(const std::string& s) {
 int verify_result(const ss::TriangleSoup& in, const ss::StripArrays& out, const std::vector<uint32_t>& indices, const ss::StripOptions& o,
                   char* msg, size_t msg_size) {
     ss::VerifyInput vi = ss::verify_input(in, out, indices);
-    vi.constraints = o.constraint_edges;
+    vi.constraints = ss::vertex_pairs(o.constraint_edges);
     vi.source = ss::index_of(o.source);
     vi.target = ss::index_of(o.target);
     const ss::VerifyReport rep = ss::verify(vi);
@@ -285,7 +285,7 @@ EngineRun measure_engine(const Spec& spec, ss::StripEngine engine, const std::st
                 return r;
             }
             // Walls are read with the mesh, as `strip --constraints` would.
-            if (!spec.walls_path.empty()) options.constraint_edges = read_walls(spec.walls_path);
+            if (!spec.walls_path.empty()) options.constraint_edges = ss::as_constraints(read_walls(spec.walls_path));
             tr.push_back(seconds_since(t));
             t = Clock::now();
             try {
@@ -515,8 +515,9 @@ ConstraintRun measure_constraints(const Spec& spec, const Settings& cfg) {
         for (int i = 0; i < r.cases; ++i) {
             ss::StripOptions o;
             for (int attempt = 0;; ++attempt) {
-                o.constraint_edges = random_polylines(soup, rng, 1 + static_cast<int>(rng() % 6), 40);
-                if (pieces_after_cutting(soup, o.constraint_edges) == 1 || attempt == 50) break;
+                const EdgeList walls = random_polylines(soup, rng, 1 + static_cast<int>(rng() % 6), 40);
+                o.constraint_edges = ss::as_constraints(walls);
+                if (pieces_after_cutting(soup, walls) == 1 || attempt == 50) break;
                 ++r.redrawn;
             }
             o.source = ss::VertexId(soup.triangles[rng() % soup.triangles.size()][rng() % 3]);

@@ -26,6 +26,7 @@
 #include "singlestrip/cycles.hpp"
 #include "singlestrip/encode.hpp"
 #include "singlestrip/errors.hpp"
+#include "singlestrip/io.hpp"
 #include "singlestrip/pipeline.hpp"
 #include "singlestrip/soup.hpp"
 #include "singlestrip/strip.hpp"
@@ -87,7 +88,7 @@ inline std::string check_result(const PipelineResult& r, const Request& req, con
         for (uint32_t t = 0; t < r.face_origin.size(); ++t) of_input[r.face_origin[t]] = t;
         for (uint32_t& p : vi.out_parent) p = p < of_input.size() ? of_input[p] : 0xffffffffu - 1;
     }
-    vi.constraints = req.strip.constraint_edges;
+    vi.constraints = vertex_pairs(req.strip.constraint_edges);
     vi.source = index_of(req.strip.source);
     vi.target = index_of(req.strip.target);
     // cycles.hpp guarantees a basis of H1 (2g+h-1 independent closed chains) for any seed,
@@ -129,7 +130,8 @@ inline std::string check_pipeline(TriangleSoup soup, const Request& req, Outcome
             if (stage == PipelineStage::Checks) return {};
             throw;
         } catch (const RequestError&) {
-            if (stage == PipelineStage::Strip) return {};
+            // A constraint pair that is not an edge is refused while the constraints are checked.
+            if (stage == PipelineStage::Strip || stage == PipelineStage::Constraints) return {};
             throw;
         }
         if (outcome) *outcome = Outcome::Stripped;

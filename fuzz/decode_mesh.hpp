@@ -147,12 +147,12 @@ inline void decode_options(FuzzedDataProvider& in, const TriangleSoup& s, Reques
                     }
             if (nbrs.empty()) break;
             const uint32_t next = nbrs[in.ConsumeIntegralInRange<size_t>(0, nbrs.size() - 1)];
-            req.strip.constraint_edges.emplace_back(cur, next);
+            req.strip.constraint_edges.push_back({cur, next});
             cur = next;
         }
     }
     if (in.ConsumeIntegralInRange<int>(0, 15) == 0)
-        req.strip.constraint_edges.emplace_back(in.ConsumeIntegralInRange<uint32_t>(0, nv), in.ConsumeIntegralInRange<uint32_t>(0, nv - 1));
+        req.strip.constraint_edges.push_back({in.ConsumeIntegralInRange<uint32_t>(0, nv), in.ConsumeIntegralInRange<uint32_t>(0, nv - 1)});
     if (in.ConsumeIntegralInRange<int>(0, 3) == 0) req.strip.source = VertexId(in.ConsumeIntegralInRange<uint32_t>(0, nv));
     if (in.ConsumeIntegralInRange<int>(0, 3) == 0) req.strip.target = VertexId(in.ConsumeIntegralInRange<uint32_t>(0, nv));
     req.cycles = in.ConsumeIntegralInRange<int>(0, 3) != 0;
@@ -176,7 +176,7 @@ inline void dump(const TriangleSoup& s, const Request& req) {
         "# engine=%s orient=%d greedy=%d cycles=%d seed_face=%lld source=%lld target=%lld constraints:", engine_name(req.strip.engine),
         req.orient, req.strip.greedy, req.cycles, req.strip.seed_face ? (long long)req.strip.seed_face->idx() : -1LL,
         req.strip.source ? (long long)req.strip.source->idx() : -1LL, req.strip.target ? (long long)req.strip.target->idx() : -1LL);
-    for (const auto& [a, b] : req.strip.constraint_edges) std::fprintf(stderr, " %u-%u", a, b);
+    for (const ConstraintEdge& e : req.strip.constraint_edges) std::fprintf(stderr, " %u-%u", e.a, e.b);
     std::fprintf(stderr, "\n");
 }
 

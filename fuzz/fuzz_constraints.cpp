@@ -40,7 +40,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         if (e.a >= nv || e.b >= nv) fuzzcheck::finding("read_constraints returned a pair out of range");
     if (nv == grid_nv && edges.size() <= 64) {
         fuzzcheck::Request req;
-        req.strip.constraint_edges = vertex_pairs(edges);
+        req.strip.constraint_edges = edges;
         if (auto p = fuzzcheck::check_pipeline(grid, req); !p.empty()) fuzzcheck::finding(p);
     }
     return 0;

@@ -337,7 +337,7 @@ py::dict strip(const py::object& vertices, const py::object& faces, const py::ob
     opt.strip.source = to_vertex_id(source, "source");
     opt.strip.target = to_vertex_id(target, "target");
     opt.strip.seed_face = to_face_id(seed_face, "seed_face");
-    opt.strip.constraint_edges = to_constraints(constraints, soup.points.size());
+    for (const auto& [a, b] : to_constraints(constraints, soup.points.size())) opt.strip.constraint_edges.push_back({a, b});
     opt.orient = orient;
     opt.repair = repair;
     opt.weld = weld;

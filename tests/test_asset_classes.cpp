@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "fixtures.hpp"
+#include "shell.hpp"
 #include "singlestrip/io.hpp"
 #include "singlestrip/repair.hpp"
 
@@ -28,24 +29,12 @@ std::string data(const std::string& name) {
     return std::string(SINGLESTRIP_SOURCE_DIR) + "/tests/data/" + name;
 }
 
-struct Scratch {
-    fs::path dir;
-    Scratch() {
-        dir = fs::temp_directory_path() / ("singlestrip-test-classes-" + std::to_string(::getpid()));
-        fs::remove_all(dir);
-        fs::create_directories(dir);
-    }
-    ~Scratch() { fs::remove_all(dir); }
-    std::string operator/(const std::string& f) const { return (dir / f).string(); }
+struct Scratch : singlestrip::test::ScratchDir {
+    Scratch() : ScratchDir("classes") {}
 };
 
-std::pair<int, std::string> cli(const std::string& args) {
-    FILE* p = ::popen((std::string("'") + SINGLESTRIP_CLI_PATH + "' " + args + " 2>&1").c_str(), "r");
-    std::string out;
-    std::array<char, 4096> buf{};
-    for (size_t n; p && (n = std::fread(buf.data(), 1, buf.size(), p)) > 0;) out.append(buf.data(), n);
-    const int st = p ? ::pclose(p) : -1;
-    return {WIFEXITED(st) ? WEXITSTATUS(st) : -1, out};
+singlestrip::test::ShellRun cli(const std::string& args) {
+    return singlestrip::test::run_program(SINGLESTRIP_CLI_PATH, args);
 }
 
 /// `strip IN --repair -o OUT` then `verify IN OUT --repair`: both must succeed.

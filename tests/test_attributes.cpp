@@ -16,11 +16,7 @@
 #include <string>
 #include <vector>
 
-#define TINYGLTF_NO_STB_IMAGE
-#define TINYGLTF_NO_STB_IMAGE_WRITE
-#define TINYGLTF_NO_EXTERNAL_IMAGE
-#include <tiny_gltf.h>
-
+#include "shell.hpp"
 #include "singlestrip/attributes.hpp"
 #include "singlestrip/errors.hpp"
 #include "singlestrip/gltf.hpp"
@@ -29,6 +25,7 @@
 #include "singlestrip/repair.hpp"
 #include "singlestrip/validate.hpp"
 #include "singlestrip/verify.hpp"
+#include "tinygltf_read.hpp"
 
 using namespace singlestrip;
 namespace fs = std::filesystem;
@@ -39,25 +36,13 @@ std::string data(const std::string& name) {
     return std::string(SINGLESTRIP_SOURCE_DIR) + "/tests/data/" + name;
 }
 
-struct Scratch {
-    fs::path dir;
-    explicit Scratch(const std::string& tag) {
-        dir = fs::temp_directory_path() / ("singlestrip-test-attrs-" + tag + "-" + std::to_string(::getpid()));
-        fs::remove_all(dir);
-        fs::create_directories(dir);
-    }
-    ~Scratch() { fs::remove_all(dir); }
-    std::string operator/(const std::string& f) const { return (dir / f).string(); }
+struct Scratch : singlestrip::test::ScratchDir {
+    explicit Scratch(const std::string& tag) : ScratchDir("attrs-" + tag) {}
 };
 
 /// Exit code and merged output of the CLI.
-std::pair<int, std::string> cli(const std::string& args) {
-    FILE* p = ::popen((std::string("'") + SINGLESTRIP_CLI_PATH + "' " + args + " 2>&1").c_str(), "r");
-    std::string out;
-    std::array<char, 4096> buf{};
-    for (size_t n; p && (n = std::fread(buf.data(), 1, buf.size(), p)) > 0;) out.append(buf.data(), n);
-    const int st = p ? ::pclose(p) : -1;
-    return {WIFEXITED(st) ? WEXITSTATUS(st) : -1, out};
+singlestrip::test::ShellRun cli(const std::string& args) {
+    return singlestrip::test::run_program(SINGLESTRIP_CLI_PATH, args);
 }
 
 void write_file(const std::string& path, const std::string& text) {
@@ -213,7 +198,7 @@ TEST(ObjAttributes, BadTextureOrNormalReferenceNamesFileLineAndProblem) {
         } catch (const InputError& e) {
             EXPECT_NE(std::string(e.what()).find(path + ": " + c.message), std::string::npos) << e.what();
         }
-        EXPECT_EQ(cli("strip '" + path + "' -o '" + dir / "o.ply'").first, 3);  // bad input (docs)
+        EXPECT_EQ(cli("strip '" + path + "' -o '" + dir / "o.ply'").code, 3);  // bad input (docs)
     }
     write_file(dir / "vt.obj", "v 0 0 0\nvt 0 nan\n");
     EXPECT_THROW(read_mesh_file(dir / "vt.obj"), InputError);

@@ -39,15 +39,8 @@ CliRun cli(const std::string& args) {
     return singlestrip::test::run_shell(q(SINGLESTRIP_CLI_PATH) + " " + args + " 2>&1");
 }
 
-struct Scratch {
-    fs::path dir;
-    explicit Scratch(const std::string& tag) {
-        dir = fs::temp_directory_path() / ("singlestrip-test-cli-" + tag + "-" + std::to_string(::getpid()));
-        fs::remove_all(dir);
-        fs::create_directories(dir);
-    }
-    ~Scratch() { fs::remove_all(dir); }
-    std::string operator/(const std::string& f) const { return (dir / f).string(); }
+struct Scratch : singlestrip::test::ScratchDir {
+    explicit Scratch(const std::string& tag) : ScratchDir("cli-" + tag) {}
     size_t count() const { return static_cast<size_t>(std::distance(fs::directory_iterator(dir), fs::directory_iterator())); }
 };
 

@@ -48,15 +48,8 @@ bool has(const Exec& r, const std::string& text) {
     return r.out.find(text) != std::string::npos;
 }
 
-struct Scratch {
-    fs::path dir;
-    explicit Scratch(const std::string& tag) {
-        dir = fs::temp_directory_path() / ("singlestrip-test-app-" + tag + "-" + std::to_string(::getpid()));
-        fs::remove_all(dir);
-        fs::create_directories(dir);
-    }
-    ~Scratch() { fs::remove_all(dir); }
-    std::string operator/(const std::string& f) const { return (dir / f).string(); }
+struct Scratch : singlestrip::test::ScratchDir {
+    explicit Scratch(const std::string& tag) : ScratchDir("app-" + tag) {}
 };
 
 std::string slurp(const std::string& path) {

@@ -129,13 +129,13 @@ TEST_P(Constraints, ThousandRandomCasesWithEndpoints) {
         const TriangleSoup soup = random_mesh(rng, name);
         StripOptions o = opts();
         const int mode = i % 4;  // constraints, endpoints, both, both with source == target
-        if (mode != 1) o.constraint_edges = random_polylines(soup, rng, 1 + rng() % 4, 12);
+        if (mode != 1) o.constraint_edges = as_constraints(random_polylines(soup, rng, 1 + rng() % 4, 12));
         if (mode != 0) {
             o.source = VertexId(soup.triangles[rng() % soup.triangles.size()][rng() % 3]);
             o.target = VertexId(mode == 3 ? o.source->idx() : soup.triangles[rng() % soup.triangles.size()][rng() % 3]);
         }
         SCOPED_TRACE(name + " case " + std::to_string(i));
-        const size_t pieces = pieces_after_cutting(soup, o.constraint_edges);
+        const size_t pieces = pieces_after_cutting(soup, vertex_pairs(o.constraint_edges));
         try {
             const auto c = strip_and_verify(soup, o);
             EXPECT_EQ(pieces, 1u) << "a separating constraint set was accepted";
@@ -170,15 +170,16 @@ TEST_P(Constraints, LoopsAroundTorusHandles) {
                                       return both;
                                   }()}) {
         StripOptions o = opts();
-        o.constraint_edges = loops;
+        o.constraint_edges = as_constraints(loops);
         o.source = VertexId(id(3, 3));
         o.target = VertexId(id(8, 5));
         const auto c = strip_and_verify(torus, o);
         EXPECT_TRUE(c.report.ok()) << describe(c);
     }
     StripOptions cut = opts();
-    cut.constraint_edges = meridian;
-    cut.constraint_edges.insert(cut.constraint_edges.end(), second_meridian.begin(), second_meridian.end());
+    EdgeList both_meridians = meridian;
+    both_meridians.insert(both_meridians.end(), second_meridian.begin(), second_meridian.end());
+    cut.constraint_edges = as_constraints(both_meridians);
     try {
         build_strip(Mesh::from_soup(torus), cut);
         FAIL() << "two meridians cut the torus in two";
@@ -243,10 +244,10 @@ TEST_P(ConstraintsReal, RandomConstraintsAndEndpointsOnRealMeshes) {
         const TriangleSoup soup = prepare_soup(read_mesh_file(path), {}, path);
         for (int i = 0; i < 8; ++i) {
             StripOptions o = opts();
-            o.constraint_edges = random_polylines(soup, rng, 1 + rng() % 6, 40);
+            o.constraint_edges = as_constraints(random_polylines(soup, rng, 1 + rng() % 6, 40));
             o.source = VertexId(soup.triangles[rng() % soup.triangles.size()][0]);
             o.target = VertexId(soup.triangles[rng() % soup.triangles.size()][1]);
-            const size_t pieces = pieces_after_cutting(soup, o.constraint_edges);
+            const size_t pieces = pieces_after_cutting(soup, vertex_pairs(o.constraint_edges));
             if (pieces > 1) {
                 EXPECT_THROW(build_strip(Mesh::from_soup(soup), o), RequestError);
                 continue;
@@ -287,12 +288,7 @@ TEST_P(Constraints, CyclesAreTheSurfacesWithConstraintsAndEndpoints) {
         auto c = strip_and_verify(torus, o);
         ASSERT_TRUE(c.report.ok()) << describe(c);
         const Cycles cycles = compute_fundamental_cycles(c.result);
-        VerifyInput vi;
-        vi.in_points = torus.points;
-        vi.in_faces = torus.triangles;
-        vi.out_points = c.arrays.points;
-        vi.out_faces = c.arrays.faces;
-        vi.out_parent = c.arrays.parent;
+        VerifyInput vi = verify_input(torus, c.arrays, c.indices);
         vi.cycles = cycles.cycles;
         const VerifyReport rep = verify(vi);
         EXPECT_TRUE(rep.ok()) << "variant " << variant << ": " << rep.to_string();

@@ -18,6 +18,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cgal_data.hpp"
+#include "cycle_check.hpp"
 #include "fixtures.hpp"
 #include "singlestrip/cycles.hpp"
 #include "singlestrip/encode.hpp"
@@ -31,6 +32,7 @@
 #include "strip_check.hpp"
 
 using namespace singlestrip;
+using singlestrip::testing::expect_closed_chains;
 
 namespace {
 
@@ -160,25 +162,6 @@ double mean_faces(const Cycles& c) {
     return c.cycles.empty() ? 0.0 : s / static_cast<double>(c.cycles.size());
 }
 
-/// Every cycle: a simple closed chain of edge-adjacent faces of the output.
-void expect_closed_chains(const StripResult& r, const Cycles& c, const std::string& what) {
-    ASSERT_EQ(c.cycles.size(), c.lengths.size()) << what;
-    for (size_t i = 0; i < c.cycles.size(); ++i) {
-        const auto& cyc = c.cycles[i];
-        ASSERT_GE(cyc.size(), 2u) << what << " cycle " << i;
-        std::vector<uint32_t> sorted = cyc;
-        std::sort(sorted.begin(), sorted.end());
-        EXPECT_EQ(std::adjacent_find(sorted.begin(), sorted.end()), sorted.end()) << what << " cycle " << i << " repeats a face";
-        for (size_t k = 0; k < cyc.size(); ++k) {
-            ASSERT_LT(cyc[k], r.order.size());
-            const uint32_t f = r.order[cyc[k]], g = r.order[cyc[(k + 1) % cyc.size()]];
-            EXPECT_NE(r.mesh.shared_halfedge(FaceId(f), FaceId(g)).idx(), kNone) << what << " cycle " << i << " step " << k;
-        }
-        EXPECT_GT(c.lengths[i], 0.0) << what;
-        EXPECT_TRUE(std::isfinite(c.lengths[i])) << what;
-    }
-}
-
 struct Outcome {
     Cycles strip_cycles, tc_cycles;
 };
@@ -204,14 +187,8 @@ Outcome check_surface(const TriangleSoup& soup, long long genus, long long loops
 
     for (const Cycles* c : {&o.strip_cycles, &o.tc_cycles}) {
         const std::string which = what + (c == &o.strip_cycles ? " steepest ascent" : " tree-cotree");
-        VerifyInput in;
-        in.in_points = soup.points;
-        in.in_faces = soup.triangles;
-        in.out_points = a.points;
-        in.out_faces = a.faces;
-        in.out_parent = a.parent;
-        in.indices = encode_triangle_strip(a.faces);
-        in.constraints = opt.constraint_edges;
+        VerifyInput in = verify_input(soup, a, encode_triangle_strip(a.faces));
+        in.constraints = vertex_pairs(opt.constraint_edges);
         in.source = index_of(opt.source);
         in.target = index_of(opt.target);
         in.cycles = c->cycles;

@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "cycle_check.hpp"
 #include "fixtures.hpp"
 #include "singlestrip/cycles.hpp"
 #include "singlestrip/mesh.hpp"
@@ -19,6 +20,12 @@
 using namespace singlestrip;
 
 namespace {
+
+/// Closed chains (cycle_check.hpp), each with its source.
+void expect_closed_chains(const StripResult& r, const Cycles& c, const std::string& what) {
+    ASSERT_EQ(c.cycles.size(), c.sources.size()) << what;
+    singlestrip::testing::expect_closed_chains(r, c, what);
+}
 
 long long expected_count(long long genus, long long loops) {
     return loops == 0 ? 2 * genus : 2 * genus + loops - 1;
@@ -59,33 +66,10 @@ bool first_face_touches_boundary(const StripResult& r) {
     return false;
 }
 
-/// Every cycle: a simple closed chain of edge-adjacent output faces.
-void expect_closed_chains(const StripResult& r, const Cycles& c, const std::string& what) {
-    ASSERT_EQ(c.cycles.size(), c.lengths.size()) << what;
-    ASSERT_EQ(c.cycles.size(), c.sources.size()) << what;
-    for (size_t i = 0; i < c.cycles.size(); ++i) {
-        const auto& cyc = c.cycles[i];
-        ASSERT_GE(cyc.size(), 2u) << what << " cycle " << i;
-        std::vector<uint32_t> sorted = cyc;
-        std::sort(sorted.begin(), sorted.end());
-        EXPECT_EQ(std::adjacent_find(sorted.begin(), sorted.end()), sorted.end()) << what << " cycle " << i << " repeats a face";
-        for (size_t k = 0; k < cyc.size(); ++k) {
-            ASSERT_LT(cyc[k], r.order.size()) << what;
-            const uint32_t f = r.order[cyc[k]], g = r.order[cyc[(k + 1) % cyc.size()]];
-            EXPECT_NE(r.mesh.shared_halfedge(FaceId(f), FaceId(g)).idx(), kNone) << what << " cycle " << i << " step " << k;
-        }
-    }
-}
-
 /// The independent verifier on the strip and its cycles: count and Z2 rank.
 void expect_verified(const TriangleSoup& soup, const StripResult& r, const Cycles& c, long long expected, const std::string& what) {
-    const StripArrays a = strip_arrays(r);
-    VerifyInput in;
-    in.in_points = soup.points;
-    in.in_faces = soup.triangles;
-    in.out_points = a.points;
-    in.out_faces = a.faces;
-    in.out_parent = a.parent;
+    VerifyInput in = verify_input(soup, strip_arrays(r), {});
+    in.indices.reset();
     in.cycles = c.cycles;
     const VerifyReport rep = verify(in);
     for (const std::string& f : rep.failures) EXPECT_NE(f.rfind("cycles", 0), 0u) << what << ": " << f;
@@ -205,7 +189,7 @@ TEST(CyclesReplay, WithConstraints) {
     // A wall around the torus tube hides a handle from the unstriped region; cycles are the
     // surface's all the same.
     StripOptions opt;
-    opt.constraint_edges = torus_meridian(0, 6);
+    opt.constraint_edges = as_constraints(torus_meridian(0, 6));
     check_surface(make_torus(12, 6), 1, 0, "torus with a meridian wall", opt);
     opt.constraint_edges.push_back({6 * 6 + 0, 6 * 6 + 1});  // and a short wall elsewhere
     check_surface(make_torus(12, 6), 1, 0, "torus with two walls", opt);

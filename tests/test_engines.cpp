@@ -327,14 +327,14 @@ Case random_case(std::mt19937_64& rng, StripEngine engine, uint32_t scale) {
             if (!c.separating) c.walls.pop_back();
         }
     }
-    c.options.constraint_edges = polyline_edges(c.walls);
+    c.options.constraint_edges = as_constraints(polyline_edges(c.walls));
     return c;
 }
 
 /// The refusal must be a RequestError naming the pieces and their sizes (largest first, as
 /// strip.cpp prints them). Returns false (after reporting) when it is not.
 bool expect_refused(const Case& c, const std::string& what) {
-    const std::vector<size_t> sizes = piece_sizes(c.soup, c.options.constraint_edges);
+    const std::vector<size_t> sizes = piece_sizes(c.soup, polyline_edges(c.walls));
     std::string expected = "into " + std::to_string(sizes.size()) + " pieces (faces per piece: ";
     for (size_t i = 0; i < sizes.size() && i < 10; ++i) expected += (i ? ", " : "") + std::to_string(sizes[i]);
     try {
@@ -414,14 +414,14 @@ TEST_P(Engines, AwkwardFamilies) {
             const WalledMesh m = make_awkward(family, size);
             const std::string name = std::string(awkward_family_name(family)) + " at " + std::to_string(size) + " (make_awkward)";
             StripOptions o = opts();
-            o.constraint_edges = polyline_edges(m.walls);
+            o.constraint_edges = as_constraints(polyline_edges(m.walls));
             expect_verified(m.soup, o, name);
             // Relabelled, from a random face, between two random vertices.
             TriangleSoup s = m.soup;
             const uint64_t seed = rng();
             const std::vector<uint32_t> moved = shuffle_vertices(s, seed);
             shuffle_faces(s, seed + 1);
-            for (auto& [a, b] : o.constraint_edges) a = moved[a], b = moved[b];
+            for (ConstraintEdge& e : o.constraint_edges) e.a = moved[e.a], e.b = moved[e.b];
             const uint32_t nf = static_cast<uint32_t>(s.triangles.size());
             o.seed_face = FaceId(static_cast<uint32_t>(rng() % nf));
             o.source = VertexId(s.triangles[o.seed_face->idx()][0]);
@@ -445,7 +445,7 @@ TEST_P(Engines, AwkwardFamiliesByParameters) {
             for (const auto& [name, m] : {std::pair{"make_slit_walls", make_slit_walls(n, len)},
                                           std::pair{"make_serpentine_walls", make_serpentine_walls(n, len)}}) {
                 StripOptions o = opts();
-                o.constraint_edges = polyline_edges(m.walls);
+                o.constraint_edges = as_constraints(polyline_edges(m.walls));
                 expect_verified(m.soup, o, name + tag);
                 o.source = o.target = VertexId(m.walls.back().back());  // a wall's end
                 expect_verified(m.soup, o, name + tag + " source = target = " + std::to_string(o.source->idx()));
@@ -505,7 +505,7 @@ TEST_P(AwkwardSizes, FamiliesCostAtMostTenPercent) {
         StripOptions o;
         o.engine = StripEngine::Matching;
         o.validate_each_split = GetParam() <= 12000;  // the mesh and the matching after every split
-        o.constraint_edges = polyline_edges(m.walls);
+        o.constraint_edges = as_constraints(polyline_edges(m.walls));
         const auto c = strip_and_verify(m.soup, o);
         ASSERT_TRUE(c.report.ok()) << awkward_family_name(family);
         const double faces = static_cast<double>(m.soup.triangles.size());

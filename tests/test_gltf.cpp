@@ -23,10 +23,6 @@
 #include <unistd.h>
 
 #include <nlohmann/json.hpp>
-#define TINYGLTF_NO_STB_IMAGE
-#define TINYGLTF_NO_STB_IMAGE_WRITE
-#define TINYGLTF_NO_EXTERNAL_IMAGE
-#include <tiny_gltf.h>
 
 #include "fixtures.hpp"
 #include "singlestrip/encode.hpp"
@@ -39,6 +35,7 @@
 #include "singlestrip/strip.hpp"
 #include "singlestrip/validate.hpp"
 #include "singlestrip/verify.hpp"
+#include "tinygltf_read.hpp"
 
 using namespace singlestrip;
 namespace fs = std::filesystem;

@@ -71,7 +71,7 @@ TEST(GrowthCavityTest, AgreesWithTheWalkAroundTheVertex) {
         StripOptions o;
         o.engine = StripEngine::Growth;
         o.validate_each_split = true;
-        o.constraint_edges = polyline_edges(m.walls);
+        o.constraint_edges = as_constraints(polyline_edges(m.walls));
         expect_verified(m.soup, o, name);
         TriangleSoup shuffled = m.soup;
         shuffle_faces(shuffled, 5);

@@ -392,8 +392,7 @@ TEST(Reproducers, PipelineReproducersVerify) {
         req.orient = c.orient;
         if (c.seed) req.strip.seed_face = FaceId(*c.seed);
         if (!c.constraints.empty())
-            req.strip.constraint_edges =
-                vertex_pairs(read_constraints((dir / c.constraints).string(), static_cast<uint32_t>(soup.points.size())));
+            req.strip.constraint_edges = read_constraints((dir / c.constraints).string(), static_cast<uint32_t>(soup.points.size()));
         fuzzcheck::Outcome outcome;
         EXPECT_EQ(fuzzcheck::check_pipeline(std::move(soup), req, &outcome), "") << c.mesh;
         EXPECT_EQ(outcome, fuzzcheck::Outcome::Stripped) << c.mesh;
@@ -459,4 +458,18 @@ TEST(Reproducers, VerifierAcceptsAndStillChecksDegenerateParents) {
     p.out_faces = {{0, 1, 3}};
     p.out_parent = {0};
     EXPECT_FALSE(verify(p).ok());
+}
+
+TEST(Reproducers, ConstraintPairThatIsNotAnEdgeIsARefusalNotAFinding) {
+    // The fuzz targets pass random pairs; stripify() refuses one that is not an edge while it
+    // checks the constraints, and the harness must count that as a refusal.
+    TriangleSoup soup = read_mesh_file(std::string(SINGLESTRIP_SOURCE_DIR) + "/tests/data/tetra.off");
+    fuzzcheck::Request req;
+    req.strip.constraint_edges = {{0, 1}, {2, 2}};
+    fuzzcheck::Outcome outcome = fuzzcheck::Outcome::Stripped;
+    EXPECT_EQ(fuzzcheck::check_pipeline(soup, req, &outcome), "");
+    EXPECT_EQ(outcome, fuzzcheck::Outcome::Refused);
+    req.strip.constraint_edges = {{0, 1}};
+    EXPECT_EQ(fuzzcheck::check_pipeline(std::move(soup), req, &outcome), "");
+    EXPECT_EQ(outcome, fuzzcheck::Outcome::Stripped);
 }

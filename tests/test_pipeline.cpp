@@ -3,7 +3,13 @@
 
 #include <nlohmann/json.hpp>
 
+#include <filesystem>
+#include <fstream>
 #include <string>
+#include <utility>
+#include <vector>
+
+#include <unistd.h>
 
 #include "fixtures.hpp"
 #include "singlestrip/encode.hpp"
@@ -72,6 +78,45 @@ TEST(Pipeline, ConstraintFileIsReadCheckedAndCounted) {
     ReportInput in;
     in.result = &r;
     EXPECT_EQ(nlohmann::json::parse(report_json(in))["options"]["constraint_edges"], 3);
+}
+
+namespace {
+
+/// The message of the RequestError stripify() throws for `o` on tetra.off, and the stage it was in.
+std::pair<std::string, PipelineStage> constraint_refusal(const PipelineOptions& o) {
+    PipelineStage stage = PipelineStage::Checks;
+    try {
+        stripify(read_input(data("tetra.off")), o, &stage);
+    } catch (const RequestError& e) {
+        return {e.what(), stage};
+    }
+    return {"(accepted)", stage};
+}
+
+}  // namespace
+
+TEST(Pipeline, ConstraintEdgesAreCheckedOnceAndNamedWhereTheUserWroteThem) {
+    const std::string file =
+        (std::filesystem::temp_directory_path() / ("singlestrip-test-pipeline-" + std::to_string(::getpid()) + ".txt")).string();
+    PipelineOptions o;
+    o.strip.constraint_edges = {{0, 1}, {2, 2}};  // every pair of distinct tetra vertices is an edge
+    EXPECT_EQ(constraint_refusal(o),
+              std::make_pair(std::string("constraint 1: (2, 2) is not an edge of the mesh"), PipelineStage::Constraints));
+
+    o.strip.constraint_edges = {{0, 1}};
+    std::ofstream(file) << "0 1\n# a comment line\n3 3\n";
+    o.constraints_file = file;
+    EXPECT_EQ(constraint_refusal(o).first, file + ": line 3: (3, 3) is not an edge of the mesh");
+    std::ofstream(file) << "1 2\n4 4\n";
+    o.index_base = 1;
+    EXPECT_EQ(constraint_refusal(o).first,
+              file + ": line 2: (3, 3) is not an edge of the mesh (vertex numbers counted from 0 here: add 1 for the file's numbering)");
+
+    std::ofstream(file) << "\n2 3 4\n";  // 1-based: the pairs (1, 2) and (2, 3), both on line 2
+    const PipelineResult r = stripify(read_input(data("tetra.off")), o);
+    const std::vector<ConstraintEdge> want = {{0, 1, 0}, {1, 2, 2}, {2, 3, 2}};
+    EXPECT_EQ(r.options.strip.constraint_edges, want);
+    std::filesystem::remove(file);
 }
 
 TEST(Pipeline, ReadInputKnowsTheBuiltInModel) {

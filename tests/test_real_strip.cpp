@@ -96,23 +96,17 @@ TEST(MatchingEngineReal, ShortFacesBehindChainsCostLittle) {
 }
 
 TEST_P(RealMeshes, TopologyOfNamedMeshes) {
-    struct Case {
-        const char* name;
-        long long genus;
-        uint32_t loops;
-    };
-    for (const Case& c : {Case{"fandisk.off", 0, 0}, Case{"head.off", 0, 3}, Case{"eight.off", 2, 0}, Case{"cheese.off", 133, 0},
-                          Case{"elephant-with-holes.off", 3, 106}}) {
+    for (const test::KnownTopology& c : test::known_topologies()) {
         const std::string p = require(c.name);
         if (p.empty()) GTEST_SKIP() << "libcgal-demo data not available";
         const auto check = strip_and_verify(load(p), opts());
         EXPECT_TRUE(check.report.ok()) << c.name << ": " << describe(check);
         const StripResult& r = check.result;
         EXPECT_EQ(r.stats.genus, c.genus) << c.name;
-        EXPECT_EQ(r.stats.boundary_loops, c.loops) << c.name;
+        EXPECT_EQ(r.stats.boundary_loops, c.boundary_loops) << c.name;
         // The growth builder records its fundamental triangles; any strip order gives them by
         // replay (cycles.hpp), at least 2g + b - 1 of them (beta1 falls from that to 0).
-        const size_t rank = static_cast<size_t>(2 * c.genus + (c.loops ? c.loops - 1 : 0));
+        const size_t rank = static_cast<size_t>(2 * c.genus + (c.boundary_loops ? c.boundary_loops - 1 : 0));
         if (GetParam() == StripEngine::Growth) {
             EXPECT_EQ(r.stats.fundamental_triangles, rank) << c.name;
         }

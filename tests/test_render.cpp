@@ -330,7 +330,7 @@ TEST(Render, ConstrainedStripWithSplitsCoversTheInput) {
     // Constraints force extra splits; the split faces must still tile the input exactly.
     const TriangleSoup soup = prepare_soup(make_torus(24, 12), {}, "torus");
     StripOptions opt;
-    for (uint32_t k = 0; k + 1 < 12; ++k) opt.constraint_edges.emplace_back(k, k + 1);  // part of a minor circle
+    for (uint32_t k = 0; k + 1 < 12; ++k) opt.constraint_edges.push_back({k, k + 1});  // part of a minor circle
     opt.source = VertexId(30);
     opt.target = VertexId(200);
     const StripResult r = build_strip(Mesh::from_soup(soup), opt);

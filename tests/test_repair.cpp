@@ -34,17 +34,11 @@ void flip(TriangleSoup& s, size_t f) {
 VerifyReport strip_and_verify(const TriangleSoup& soup, PipelineOptions o, PipelineResult* out = nullptr) {
     o.self_check = true;
     PipelineResult r = stripify(soup, o);
-    VerifyInput vi;
-    vi.in_points = soup.points;
-    vi.in_faces = soup.triangles;
-    vi.out_points = r.arrays.points;
-    vi.out_faces = r.arrays.faces;
-    vi.out_parent = r.arrays.parent;
-    vi.indices = r.indices;
+    VerifyInput vi = verify_input(soup, r.arrays, r.indices);
     vi.restart_index = o.restart_index;
     vi.source = index_of(o.strip.source);
     vi.target = index_of(o.strip.target);
-    vi.constraints = o.strip.constraint_edges;
+    vi.constraints = vertex_pairs(o.strip.constraint_edges);
     const auto notes = replay_input_steps(vi, {o.weld, o.repair, o.orient});
     VerifyReport rep = verify(vi);
     rep.notes.insert(rep.notes.begin(), notes.begin(), notes.end());
@@ -230,12 +224,8 @@ TEST(Components, VerifierRejectsAComponentSplitIntoTwoRuns) {
     for (Point3 p : make_icosphere(0).points) s.points.push_back({p[0] + 5, p[1], p[2]});
     for (Triangle t : make_icosphere(0).triangles) s.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
     const PipelineResult r = stripify(s, PipelineOptions{});
-    VerifyInput vi;
-    vi.in_points = s.points;
-    vi.in_faces = s.triangles;
-    vi.out_points = r.arrays.points;
-    vi.out_faces = r.arrays.faces;
-    vi.out_parent = r.arrays.parent;
+    VerifyInput vi = verify_input(s, r.arrays, r.indices);
+    vi.indices.reset();  // the faces are reordered below; the indices would no longer match
     EXPECT_TRUE(verify(vi).ok());
     // Move the first face of the first strip to the end: that component is now two runs.
     std::rotate(vi.out_faces.begin(), vi.out_faces.begin() + 1, vi.out_faces.end());

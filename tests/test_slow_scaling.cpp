@@ -66,7 +66,7 @@ TEST_P(Slow, AwkwardFamilies) {
         for (const uint32_t n : {100000u, 1000000u}) {
             const WalledMesh m = make_awkward(family, n);
             StripOptions o = opts();
-            o.constraint_edges = polyline_edges(m.walls);
+            o.constraint_edges = as_constraints(polyline_edges(m.walls));
             expect_verified(m.soup, o, std::string(awkward_family_name(family)) + " at " + std::to_string(n));
         }
 }

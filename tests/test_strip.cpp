@@ -214,12 +214,7 @@ TEST_P(Strip, FundamentalTrianglesMatchTopology) {
         }
         EXPECT_GE(replay_fundamental_positions(check.result.mesh, check.result.order).size(), c.expected);
         const Cycles cycles = compute_fundamental_cycles(check.result);
-        VerifyInput in;
-        in.in_points = c.soup.points;
-        in.in_faces = c.soup.triangles;
-        in.out_points = check.arrays.points;
-        in.out_faces = check.arrays.faces;
-        in.out_parent = check.arrays.parent;
+        VerifyInput in = verify_input(c.soup, check.arrays, check.indices);
         in.cycles = cycles.cycles;
         const VerifyReport rep = verify(in);
         EXPECT_TRUE(rep.ok()) << rep.to_string();

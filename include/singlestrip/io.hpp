@@ -70,22 +70,15 @@ struct ReadOptions {
 /// count the file declares.
 TriangleSoup read_mesh_file(const std::string& path, const ReadOptions& options = {});
 
-/// One constraint edge as read from a file: its two vertex numbers and the file line it is on.
-struct ConstraintEdge {
-    uint32_t a = 0, b = 0;
-    uint32_t line = 0;
-    friend bool operator==(const ConstraintEdge&, const ConstraintEdge&) = default;
-};
-
 /// Reads a constraint file: one polyline per line, written as whitespace-separated input vertex
 /// indices (0-based); '#' starts a comment; blank lines are ignored. A polyline a b c yields the
-/// vertex pairs (a,b), (b,c), in file order. Whether a pair is a mesh edge is checked by the
-/// strip builder (RequestError), not here.
+/// vertex pairs (a,b), (b,c), in file order, each with its line (ConstraintEdge, soup.hpp).
+/// Whether a pair is a mesh edge is checked by stripify() (RequestError), not here.
 /// \throw InputError naming the file and line for a missing/unreadable file, a token that is
 ///        not a non-negative integer, a polyline with a single vertex, or an index >= num_vertices.
 std::vector<ConstraintEdge> read_constraints(const std::string& path, uint32_t num_vertices);
 
-/// The vertex pairs of `edges`, in order (StripOptions::constraint_edges).
+/// The vertex pairs of `edges`, in order (VerifyInput::constraints).
 std::vector<std::pair<uint32_t, uint32_t>> vertex_pairs(const std::vector<ConstraintEdge>& edges);
 
 /// Vertex numbering chosen by the user (`--index-base`): 0 (the default, the numbering of every
@@ -106,10 +99,6 @@ std::vector<ConstraintEdge> read_constraints_based(const std::string& path, uint
 /// O(n^2) in the number of paths (a handful).
 void refuse_overwrites(const std::vector<std::pair<std::string, std::string>>& inputs,
                        const std::vector<std::pair<std::string, std::string>>& outputs);
-
-/// Checks that every constraint edge read from `path` is an edge of the triangle soup.
-/// \throw RequestError naming the file, the line and the pair. O(F + edges).
-void check_constraint_edges(const std::string& path, const std::vector<ConstraintEdge>& edges, const TriangleSoup& soup);
 
 /// `s` with ASCII letters in lower case (format names and extensions are case-insensitive).
 std::string ascii_lower(std::string s);

@@ -65,7 +65,9 @@ struct PipelineOptions {
     /// Prefix of input error messages (the file name).
     std::string name = "input";
     /// Constraint file (io.hpp format), read after the input checks; its pairs are appended to
-    /// strip.constraint_edges and each must be a mesh edge (messages name the file line).
+    /// strip.constraint_edges with their lines. Every pair there, given or read, must be a mesh
+    /// edge: checked once, in the Constraints stage (messages name the file line, or the index
+    /// of a pair given directly).
     std::optional<std::string> constraints_file;
     /// Vertex numbers in constraints_file start at this: 0 (default) or 1 (`--index-base 1`).
     /// strip.source, strip.target and strip.constraint_edges are always 0-based.
@@ -113,7 +115,8 @@ struct PipelineResult {
 std::vector<uint32_t> degenerate_joined_indices(const PipelineResult& result);
 
 /// Where stripify() is (or stopped): lets a caller that catches an exception tell an expected
-/// refusal (InputError in Checks, RequestError in Strip) from a bug.
+/// refusal (InputError in Checks; a constraint file's InputError or a constraint pair's
+/// RequestError in Constraints; RequestError in Strip) from a bug.
 enum class PipelineStage : uint8_t { Checks, Constraints, Mesh, Strip, Encode, Cycles, Done };
 
 /// "prepare_soup", "constraints", "Mesh::from_soup", "build_strip", "encode_triangle_strip",

@@ -42,6 +42,15 @@ struct TriangleSoup {
     std::vector<VertexAttribute> attributes = {};  ///< each with points.size() * components values
 };
 
+/// One constraint edge (an edge the strip never crosses): two input vertex numbers, 0-based, and
+/// the line of the constraint file it was read from, or 0 when it was given as a pair. The line
+/// lets every message about the edge name the place the user wrote it.
+struct ConstraintEdge {
+    uint32_t a = 0, b = 0;
+    uint32_t line = 0;
+    friend bool operator==(const ConstraintEdge&, const ConstraintEdge&) = default;
+};
+
 /// Output arrays in strip order: faces as vertex triples (orientation kept) and the input
 /// triangle each lies in (strip_arrays(), strip.hpp).
 struct StripArrays {

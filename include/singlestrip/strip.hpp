@@ -48,8 +48,9 @@ struct StripOptions {
     /// Greedy turns (paper Algorithm 2) and the neighbour-count ordering; off = the paper's
     /// plain same-direction turn rule.
     bool greedy = true;
-    /// Edges the strip never crosses, as pairs of input vertex indices (§5.1).
-    std::vector<std::pair<uint32_t, uint32_t>> constraint_edges;
+    /// Edges the strip never crosses, as pairs of input vertex indices (§5.1); their lines only
+    /// name them in messages.
+    std::vector<ConstraintEdge> constraint_edges;
     /// First strip face is incident to `source`, last to `target` (§5.2); input vertex indices.
     std::optional<VertexId> source;
     std::optional<VertexId> target;

@@ -20,6 +20,7 @@
 #include <utility>
 
 #include "singlestrip/errors.hpp"
+#include "strip_controls.hpp"
 
 namespace singlestrip {
 
@@ -151,6 +152,18 @@ private:
     enum class SearchOutcome : uint8_t { Met, IslandOfA, IslandOfB, OverBudget };
     SearchOutcome bidirectional_search(uint32_t n, uint32_t a, uint32_t b, uint32_t r, size_t budget = SIZE_MAX);
 
+    /// The faces grow() may take next after t: up to three, in the order they are tried.
+    struct Candidates {
+        uint32_t face[3] = {kNone, kNone, kNone};
+        uint32_t he[3] = {kNone, kNone, kNone};  ///< t's half-edge towards face[i]
+        int turn[3] = {0, 0, 0};                 ///< +1 right, -1 left, 0 (no in-edge)
+        uint32_t order[3] = {0, 1, 2};           ///< indices into face[], most preferred first
+        uint32_t n = 0;
+        bool dest_adjacent = false;  ///< dest is open but was left out (other faces remain)
+    };
+    Candidates candidates(uint32_t t, uint32_t region, uint32_t dest) const;
+    uint32_t choose_safe(const Candidates& c, uint32_t t, uint32_t region, Classification (&cls)[3]);
+    void end_at_dest(uint32_t t, uint32_t region, uint32_t dest);
     void grow(uint32_t cursor, uint32_t region, uint32_t dest);
     uint32_t take_bridge(uint32_t cursor, uint32_t n, uint32_t region, uint32_t dest, const Classification& c);
     uint32_t take_forced(uint32_t cursor, uint32_t f, uint32_t region, uint32_t dest);
@@ -159,19 +172,13 @@ private:
     bool absorb_at_tail();
     bool try_detour(uint32_t region, uint32_t anchor);
     uint32_t choose_seed() const;
-    uint32_t find_edge(uint32_t u, uint32_t v) const;
-    template <class Fn>
-    bool for_each_outgoing(uint32_t v, Fn&& fn) const;
-    uint32_t face_at_vertex(uint32_t v, uint32_t avoid) const;
-    void apply_constraints();
-    [[nodiscard]] bool has_vertex(uint32_t f, uint32_t v) const {
-        const auto& cv = mesh_.corner_vertices();
-        return cv[he(f, 0)] == v || cv[he(f, 1)] == v || cv[he(f, 2)] == v;
+    [[nodiscard]] bool has_vertex(uint32_t f, uint32_t v) const { return face_has_vertex(mesh_, f, v); }
+    [[nodiscard]] uint32_t face_at_vertex(uint32_t v, uint32_t avoid) const {
+        return singlestrip::face_at_vertex(mesh_, blocked_, v, avoid);
     }
     uint32_t source_ = kNone, target_ = kNone;
 
     // ---- the steps of run() ----
-    void check_request() const;
     void prepare();
     std::pair<uint32_t, uint32_t> choose_ends();
     [[nodiscard]] long long surface_chi() const;
@@ -445,109 +452,118 @@ void Builder::check_split_budget() const {
         throw InternalError("strip builder: split budget exceeded (" + std::to_string(stats_.splits) + " splits)");
 }
 
+// The open neighbours of t in `region`, dest left out while anything else is left, in the order
+// they are tried.
+Builder::Candidates Builder::candidates(uint32_t t, uint32_t region, uint32_t dest) const {
+    Candidates c;
+    for (uint32_t k = 0; k < 3; ++k) {
+        const uint32_t h = he(t, k);
+        const uint32_t g = open_neighbor(h, region);
+        if (g == kNone) continue;
+        if (g == dest && region_size_[region] > 1) {
+            c.dest_adjacent = true;
+            continue;
+        }
+        c.face[c.n] = g;
+        c.he[c.n++] = h;
+    }
+    // Turn of each candidate relative to the in-edge of t.
+    const uint32_t pv = prev_[t];
+    const uint32_t hin = pv == kNone ? kNone : shared_of(t, pv);
+    for (uint32_t i = 0; i < c.n; ++i) c.turn[i] = hin == kNone ? 0 : (c.he[i] == next_of(hin) ? +1 : -1);
+    // Order: greedy = fewer open neighbours first (Warnsdorff), ties alternate the turn;
+    // paper = keep the same turn direction as before.
+    uint32_t deg[3] = {0, 0, 0};
+    for (uint32_t i = 0; i < c.n; ++i) deg[i] = count_open(c.face[i], region);
+    auto better = [&](uint32_t i, uint32_t j) {
+        if (opt_.greedy) {
+            if (deg[i] != deg[j]) return deg[i] < deg[j];
+            return c.turn[i] != last_turn_ && c.turn[j] == last_turn_;
+        }
+        return c.turn[i] == (last_turn_ == 0 ? +1 : last_turn_) && c.turn[j] != c.turn[i];
+    };
+    // Up to three candidates (the seed has no in-edge): insertion sort.
+    for (uint32_t i = 1; i < c.n; ++i)
+        for (uint32_t j = i; j > 0 && better(c.order[j], c.order[j - 1]); --j) std::swap(c.order[j], c.order[j - 1]);
+    return c;
+}
+
+// The first candidate (in c.order) that is safe to take, or kNone; cls[i] classifies the i-th.
+uint32_t Builder::choose_safe(const Candidates& c, uint32_t t, uint32_t region, Classification (&cls)[3]) {
+    // Cheap tests first for every candidate considered; searches only if none passes.
+    // Without greedy turns only the preferred neighbour is considered (paper, Algorithm 1).
+    const uint32_t considered = opt_.greedy ? c.n : 1;
+    uint32_t chosen = kNone;
+    // In preference order: safe by the cheap tests, or by a search of bounded cost (O(1)
+    // per step, so a long search is never spent on a face we might not take). The cheap
+    // tests of a candidate run only when the ones before it are not safe (a cavity test
+    // around a high-valence vertex is not O(1) either).
+    constexpr size_t kFirstBudget = 256;
+    for (uint32_t i = 0; i < considered && chosen == kNone; ++i) {
+        cls[i] = classify_local(c.face[c.order[i]], t, region);
+        if (cls[i].kind == Kind::Unknown) resolve(cls[i], c.face[c.order[i]], region, kFirstBudget);
+        if (cls[i].kind == Kind::Safe) chosen = i;
+    }
+    // Two undecided candidates: search both with a growing budget, so a quick answer for
+    // one is not preceded by a long search of the other (a bridge search not taken is
+    // wasted work that no amortisation pays for).
+    for (size_t budget = 4 * kFirstBudget; chosen == kNone; budget *= 4) {
+        bool undecided = false;
+        for (uint32_t i = 0; i < considered && chosen == kNone; ++i) {
+            if (cls[i].kind != Kind::Unknown) continue;
+            if (!resolve(cls[i], c.face[c.order[i]], region, budget))
+                undecided = true;
+            else if (cls[i].kind == Kind::Safe)
+                chosen = i;
+        }
+        if (!undecided) break;
+    }
+    return chosen;
+}
+
+// Only dest is reachable from t: the region ends here and what is left is deferred; it touches
+// dest (inside a splice dest's out-edge leads back to the strip, so through one edge; as the
+// strip's last face, possibly through two, then maybe as two islands).
+void Builder::end_at_dest(uint32_t t, uint32_t region, uint32_t dest) {
+    const Classification c = classify(dest, t, region);
+    if (c.kind == Kind::Bridge) {
+        const uint32_t large_he = c.small_side == 0 ? c.hb : c.ha;
+        const uint32_t large = take_bridge(t, dest, region, kNone, c);
+        defer(large, twin_of(large_he));
+        return;
+    }
+    if (c.fundamental) note_fundamental(dest, region);
+    take(t, dest);
+    defer(region, twin_of(c.ha));
+}
+
 // Grows the strip after `cursor` through region `region`; if dest != kNone the region must end
 // with dest (it is spliced before an existing strip face).
 void Builder::grow(uint32_t cursor, uint32_t region, uint32_t dest) {
     uint32_t t = cursor;
     while (region_size_[region] > 0) {
-        // Candidates: open neighbours of t, excluding dest while anything else is left.
-        uint32_t cand[3];
-        uint32_t hc[3];
-        uint32_t nc = 0;
-        bool dest_adjacent = false;
-        for (uint32_t k = 0; k < 3; ++k) {
-            const uint32_t h = he(t, k);
-            const uint32_t g = open_neighbor(h, region);
-            if (g == kNone) continue;
-            if (g == dest && region_size_[region] > 1) {
-                dest_adjacent = true;
-                continue;
-            }
-            cand[nc] = g;
-            hc[nc++] = h;
-        }
-        if (nc == 0) {
-            if (dest_adjacent) {
-                // Only dest is reachable: end the region here and defer what is left; it touches
-                // dest (inside a splice dest's out-edge leads back to the strip, so through one
-                // edge; as the strip's last face, possibly through two, then maybe as two islands).
-                const Classification c = classify(dest, t, region);
-                if (c.kind == Kind::Bridge) {
-                    const uint32_t large_he = c.small_side == 0 ? c.hb : c.ha;
-                    const uint32_t large = take_bridge(t, dest, region, kNone, c);
-                    defer(large, twin_of(large_he));
-                    return;
-                }
-                if (c.fundamental) note_fundamental(dest, region);
-                take(t, dest);
-                defer(region, twin_of(c.ha));
+        const Candidates c = candidates(t, region, dest);
+        if (c.n == 0) {
+            if (c.dest_adjacent) {
+                end_at_dest(t, region, dest);
                 return;
             }
             throw InternalError("strip builder: strip stuck with " + std::to_string(region_size_[region]) +
                                 " faces left in its region (invariant G broken)");
         }
-        // Turn of each candidate relative to the in-edge of t.
-        const uint32_t pv = prev_[t];
-        const uint32_t hin = pv == kNone ? kNone : shared_of(t, pv);
-        int turn[3] = {0, 0, 0};
-        for (uint32_t i = 0; i < nc; ++i) turn[i] = hin == kNone ? 0 : (hc[i] == next_of(hin) ? +1 : -1);
-        // Order: greedy = fewer open neighbours first (Warnsdorff), ties alternate the turn;
-        // paper = keep the same turn direction as before.
-        uint32_t idx[3] = {0, 1, 2};
-        uint32_t deg[3] = {0, 0, 0};
-        for (uint32_t i = 0; i < nc; ++i) deg[i] = count_open(cand[i], region);
-        auto better = [&](uint32_t i, uint32_t j) {
-            if (opt_.greedy) {
-                if (deg[i] != deg[j]) return deg[i] < deg[j];
-                return turn[i] != last_turn_ && turn[j] == last_turn_;
-            }
-            return turn[i] == (last_turn_ == 0 ? +1 : last_turn_) && turn[j] != turn[i];
-        };
-        // Up to three candidates (the seed has no in-edge): insertion sort.
-        for (uint32_t i = 1; i < nc; ++i)
-            for (uint32_t j = i; j > 0 && better(idx[j], idx[j - 1]); --j) std::swap(idx[j], idx[j - 1]);
-
-        // Cheap tests first for every candidate considered; searches only if none passes.
-        // Without greedy turns only the preferred neighbour is considered (paper, Algorithm 1).
-        const uint32_t considered = opt_.greedy ? nc : 1;
-        uint32_t chosen = kNone;
         Classification cls[3];
-        // In preference order: safe by the cheap tests, or by a search of bounded cost (O(1)
-        // per step, so a long search is never spent on a face we might not take). The cheap
-        // tests of a candidate run only when the ones before it are not safe (a cavity test
-        // around a high-valence vertex is not O(1) either).
-        constexpr size_t kFirstBudget = 256;
-        for (uint32_t i = 0; i < considered && chosen == kNone; ++i) {
-            cls[i] = classify_local(cand[idx[i]], t, region);
-            if (cls[i].kind == Kind::Unknown) resolve(cls[i], cand[idx[i]], region, kFirstBudget);
-            if (cls[i].kind == Kind::Safe) chosen = i;
-        }
-        // Two undecided candidates: search both with a growing budget, so a quick answer for
-        // one is not preceded by a long search of the other (a bridge search not taken is
-        // wasted work that no amortisation pays for).
-        for (size_t budget = 4 * kFirstBudget; chosen == kNone; budget *= 4) {
-            bool undecided = false;
-            for (uint32_t i = 0; i < considered && chosen == kNone; ++i) {
-                if (cls[i].kind != Kind::Unknown) continue;
-                if (!resolve(cls[i], cand[idx[i]], region, budget))
-                    undecided = true;
-                else if (cls[i].kind == Kind::Safe)
-                    chosen = i;
-            }
-            if (!undecided) break;
-        }
-        if (chosen != kNone) {
-            const uint32_t n = cand[idx[chosen]];
+        if (const uint32_t chosen = choose_safe(c, t, region, cls); chosen != kNone) {
+            const uint32_t n = c.face[c.order[chosen]];
             if (cls[chosen].fundamental) note_fundamental(n, region);
-            last_turn_ = turn[idx[chosen]];
+            last_turn_ = c.turn[c.order[chosen]];
             take(t, n);
             t = n;
             continue;
         }
         // Every candidate considered is a bridge: take the first anyway, continue into one island
         // and defer the other (relabelled, so R stays connected: invariant G).
-        const uint32_t n = cand[idx[0]];
-        last_turn_ = turn[idx[0]];
+        const uint32_t n = c.face[c.order[0]];
+        last_turn_ = c.turn[c.order[0]];
         resolve(cls[0], n, region);
         region = take_bridge(t, n, region, dest, cls[0]);
         t = n;
@@ -736,136 +752,11 @@ uint32_t Builder::choose_seed() const {
     return best;
 }
 
-// Calls fn(h) for every half-edge h leaving v, once each, until fn returns true (then returns
-// true). Rotates both ways from v's half-edge, since the fan may be open. O(degree of v).
-template <class Fn>
-bool Builder::for_each_outgoing(uint32_t v, Fn&& fn) const {
-    const uint32_t h0 = vertex_he_of(v);
-    if (h0 == kNone) return false;
-    uint32_t h = h0;
-    for (uint32_t guard = 0; guard <= mesh_.num_halfedges(); ++guard) {
-        if (fn(h)) return true;
-        const uint32_t t = twin_of(prev_of(h));
-        if (t == kNone) break;
-        if (t == h0) return false;  // closed fan: every half-edge seen
-        h = t;
-    }
-    h = h0;
-    for (uint32_t guard = 0; guard <= mesh_.num_halfedges(); ++guard) {
-        const uint32_t t = twin_of(h);
-        if (t == kNone) break;
-        h = next_of(t);
-        if (h == h0) break;
-        if (fn(h)) return true;
-    }
-    return false;
-}
-
-// Finds the half-edge u->v or v->u, or kNone. O(degree of u).
-uint32_t Builder::find_edge(uint32_t u, uint32_t v) const {
-    if (u >= mesh_.num_vertices() || v >= mesh_.num_vertices()) return kNone;
-    uint32_t found = kNone;
-    for_each_outgoing(u, [&](uint32_t h) {
-        if (to_of(h) == v)
-            found = h;
-        else if (from_of(prev_of(h)) == v)
-            found = prev_of(h);
-        return found != kNone;
-    });
-    return found;
-}
-
-void Builder::apply_constraints() {
-    size_t index = 0;
-    for (const auto& [u, v] : opt_.constraint_edges) {
-        const uint32_t h = find_edge(u, v);
-        if (h == kNone)
-            throw RequestError("constraint " + std::to_string(index) + ": (" + std::to_string(u) + ", " + std::to_string(v) +
-                               ") is not an edge of the mesh");
-        blocked_[h] = 1;
-        if (twin_of(h) != kNone) blocked_[twin_of(h)] = 1;
-        ++index;
-    }
-    if (opt_.constraint_edges.empty()) return;
-    // The faces must stay connected through edges that are not constraints.
-    const uint32_t nf = mesh_.num_faces();
-    std::vector<uint32_t> piece(nf, kNone), sizes;
-    std::vector<uint32_t> stack;
-    for (uint32_t f0 = 0; f0 < nf; ++f0) {
-        if (piece[f0] != kNone) continue;
-        const uint32_t id = static_cast<uint32_t>(sizes.size());
-        sizes.push_back(0);
-        piece[f0] = id;
-        stack.push_back(f0);
-        while (!stack.empty()) {
-            const uint32_t f = stack.back();
-            stack.pop_back();
-            ++sizes[id];
-            for (uint32_t k = 0; k < 3; ++k) {
-                const uint32_t h = he(f, k);
-                if (!passable(h)) continue;
-                const uint32_t g = across(h);
-                if (piece[g] == kNone) {
-                    piece[g] = id;
-                    stack.push_back(g);
-                }
-            }
-        }
-    }
-    if (sizes.size() > 1) {
-        std::sort(sizes.rbegin(), sizes.rend());
-        std::string list;
-        for (size_t i = 0; i < sizes.size() && i < 10; ++i) list += (i ? ", " : "") + std::to_string(sizes[i]);
-        if (sizes.size() > 10) list += ", ...";
-        throw RequestError("the constraint edges cut the surface into " + std::to_string(sizes.size()) +
-                           " pieces (faces per piece: " + list + "); one strip cannot cover them without crossing a constraint");
-    }
-}
-
-// A face incident to vertex v, preferring faces with more blocked sides; `avoid` is skipped
-// when another face exists. kNone if v has no face.
-uint32_t Builder::face_at_vertex(uint32_t v, uint32_t avoid) const {
-    uint32_t best = kNone;
-    int best_score = -1;
-    for_each_outgoing(v, [&](uint32_t h) {
-        const uint32_t f = face_of(h);
-        int score = 0;
-        for (uint32_t k = 0; k < 3; ++k) score += !passable(he(f, k));
-        if (f == avoid) score = -1;
-        if (score > best_score || best == kNone) {
-            best_score = score;
-            best = f;
-        }
-        return false;
-    });
-    return best;
-}
-
-// Rejects requests that cannot be met before anything is built.
-void Builder::check_request() const {
-    const uint32_t nf = mesh_.num_faces();
-    if (nf == 0) throw InputError("mesh has no faces");
-    if (opt_.seed_face && opt_.seed_face->idx() >= nf)
-        throw RequestError("seed face " + std::to_string(opt_.seed_face->idx()) + " is out of range (mesh has " + std::to_string(nf) +
-                           " faces)");
-    auto check_vertex = [&](const char* what, uint32_t v) {
-        if (v >= mesh_.num_input_vertices())
-            throw RequestError(std::string(what) + " vertex " + std::to_string(v) + " is out of range (mesh has " +
-                               std::to_string(mesh_.num_input_vertices()) + " vertices)");
-        if (vertex_he_of(v) == kNone) throw RequestError(std::string(what) + " vertex " + std::to_string(v) + " is not used by any face");
-    };
-    if (opt_.source) check_vertex("source", opt_.source->idx());
-    if (opt_.target) check_vertex("target", opt_.target->idx());
-    if (opt_.seed_face && opt_.source && !has_vertex(opt_.seed_face->idx(), opt_.source->idx()))
-        throw RequestError("seed face " + std::to_string(opt_.seed_face->idx()) + " is not incident to source vertex " +
-                           std::to_string(opt_.source->idx()));
-}
-
 // Per-face state, constraints, the rim flags of the cavity test, the input's statistics, and
 // region 0 holding every face.
 void Builder::prepare() {
     grow_arrays();
-    apply_constraints();
+    blocked_ = constraint_halfedges(mesh_, opt_);
     for (uint32_t h = 0; h < mesh_.num_halfedges(); ++h)
         if (!passable(h)) rim_[from_of(h)] = rim_[to_of(h)] = 1;
     stats_.input_triangles = mesh_.num_faces();
@@ -1045,16 +936,7 @@ StripResult Builder::finish() {
     if (result.order.size() != mesh_.num_faces())
         throw InternalError("strip builder: strip covers " + std::to_string(result.order.size()) + " of " +
                             std::to_string(mesh_.num_faces()) + " faces");
-    // Swaps: two consecutive turns in the same direction.
-    int prev_turn = 0;
-    for (size_t i = 1; i + 1 < result.order.size(); ++i) {
-        const uint32_t hin = shared_of(result.order[i], result.order[i - 1]);
-        const uint32_t hout = shared_of(result.order[i], result.order[i + 1]);
-        if (hin == kNone || hout == kNone) throw InternalError("strip builder: consecutive faces do not share an edge");
-        const int turn = hout == next_of(hin) ? +1 : -1;
-        if (turn == prev_turn) ++stats_.swaps;
-        prev_turn = turn;
-    }
+    stats_.swaps += count_swaps(mesh_, result.order);
     stats_.output_triangles = mesh_.num_faces();
     result.stats = stats_;
     result.take_time = std::move(time_);
@@ -1063,7 +945,7 @@ StripResult Builder::finish() {
 }
 
 StripResult Builder::run() {
-    check_request();
+    check_strip_request(mesh_, opt_);
     prepare();
     const auto [seed, dest] = choose_ends();
     const long long chi_all = surface_chi();

@@ -106,10 +106,10 @@ uint32_t find_halfedge(const Mesh& mesh, uint32_t u, uint32_t v) {
 std::vector<uint8_t> constraint_halfedges(const Mesh& mesh, const StripOptions& opt) {
     std::vector<uint8_t> blocked(mesh.num_halfedges(), 0);
     size_t index = 0;
-    for (const auto& [u, v] : opt.constraint_edges) {
-        const uint32_t h = find_halfedge(mesh, u, v);
+    for (const ConstraintEdge& e : opt.constraint_edges) {
+        const uint32_t h = find_halfedge(mesh, e.a, e.b);
         if (h == kNone)
-            throw RequestError("constraint " + std::to_string(index) + ": (" + std::to_string(u) + ", " + std::to_string(v) +
+            throw RequestError("constraint " + std::to_string(index) + ": (" + std::to_string(e.a) + ", " + std::to_string(e.b) +
                                ") is not an edge of the mesh");
         blocked[h] = 1;
         if (!mesh.is_boundary(HalfedgeId(h))) blocked[mesh.twin(HalfedgeId(h)).idx()] = 1;

@@ -6,7 +6,6 @@
 #include <sstream>
 #include <string>
 
-#include "core/soup_edges.hpp"
 #include "singlestrip/errors.hpp"
 #include "singlestrip/io.hpp"
 
@@ -49,14 +48,6 @@ std::vector<std::pair<uint32_t, uint32_t>> vertex_pairs(const std::vector<Constr
     pairs.reserve(edges.size());
     for (const ConstraintEdge& e : edges) pairs.emplace_back(e.a, e.b);
     return pairs;
-}
-
-void check_constraint_edges(const std::string& path, const std::vector<ConstraintEdge>& constraints, const TriangleSoup& soup) {
-    const SoupEdges edges(soup.triangles, soup.points.size());
-    for (const ConstraintEdge& c : constraints)
-        if (!edges.has_edge(c.a, c.b))
-            throw RequestError(path + ": line " + std::to_string(c.line) + ": (" + std::to_string(c.a) + ", " + std::to_string(c.b) +
-                               ") is not an edge of the mesh");
 }
 
 }  // namespace singlestrip

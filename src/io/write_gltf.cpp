@@ -110,101 +110,106 @@ std::vector<Point3> vertex_normals(const std::vector<Point3>& points, const std:
     return n;
 }
 
-void write_gltf_strip(const std::string& path, const StripArrays& a, const std::vector<uint32_t>& strip_indices) {
-    const std::string ext = lower_extension(path);
-    if (ext != ".glb" && ext != ".gltf") throw RequestError(path + ": glTF output needs the extension .glb or .gltf");
-    if (strip_indices.empty() || a.faces.empty()) throw RequestError(path + ": nothing to write (empty strip)");
-    const size_t nv = a.points.size();
+namespace {
+
+/// The largest strip index; \throw RequestError for an index past the vertices.
+uint32_t max_strip_index(const std::string& path, const std::vector<uint32_t>& strip_indices, size_t nv) {
     uint32_t max_index = 0;
     for (uint32_t i : strip_indices) {
         if (i >= nv)
             throw RequestError(path + ": strip index " + std::to_string(i) + " is out of range (" + std::to_string(nv) + " vertices)");
         max_index = std::max(max_index, i);
     }
-    const bool short_indices = max_index < 65535u;  // 65535 is the (forbidden) restart value
+    return max_index;
+}
 
-    const VertexAttribute* given = find_attribute(a.attributes, "NORMAL");
-    const std::vector<Point3> normals = given && given->components == 3 ? attribute_normals(*given, nv) : vertex_normals(a.points, a.faces);
-
-    std::vector<unsigned char> buf;
-    buf.reserve(nv * 24 + strip_indices.size() * 4 + 4);
+/// Positions, normals and indices in one buffer, with where each starts.
+struct StripBuffer {
+    std::vector<unsigned char> bytes;
+    size_t normals_offset = 0;
+    size_t indices_offset = 0;
+    size_t indices_bytes = 0;
     std::array<double, 3> pmin{}, pmax{};
+};
+
+StripBuffer pack_strip_buffer(const std::vector<Point3>& points, const std::vector<Point3>& normals,
+                              const std::vector<uint32_t>& strip_indices, bool short_indices) {
+    StripBuffer b;
+    auto& buf = b.bytes;
+    buf.reserve(points.size() * 24 + strip_indices.size() * 4 + 4);
     for (int d = 0; d < 3; ++d) {
-        pmin[d] = std::numeric_limits<double>::infinity();
-        pmax[d] = -std::numeric_limits<double>::infinity();
+        b.pmin[d] = std::numeric_limits<double>::infinity();
+        b.pmax[d] = -std::numeric_limits<double>::infinity();
     }
-    for (const Point3& p : a.points) {
+    for (const Point3& p : points) {
         for (int d = 0; d < 3; ++d) {
             const float f = static_cast<float>(p[d]);
             append_bytes(buf, f);
             // min/max must equal the stored float values exactly (the validator recomputes them).
-            pmin[d] = std::min(pmin[d], static_cast<double>(f));
-            pmax[d] = std::max(pmax[d], static_cast<double>(f));
+            b.pmin[d] = std::min(b.pmin[d], static_cast<double>(f));
+            b.pmax[d] = std::max(b.pmax[d], static_cast<double>(f));
         }
     }
-    const size_t normals_offset = buf.size();
+    b.normals_offset = buf.size();
     for (const Point3& n : normals)
         for (int d = 0; d < 3; ++d) append_bytes(buf, static_cast<float>(n[d]));
-    const size_t indices_offset = buf.size();  // multiple of 4: aligned for either index type
+    b.indices_offset = buf.size();  // multiple of 4: aligned for either index type
     for (uint32_t i : strip_indices) {
         if (short_indices)
             append_bytes(buf, static_cast<uint16_t>(i));
         else
             append_bytes(buf, i);
     }
-    const size_t indices_bytes = buf.size() - indices_offset;
+    b.indices_bytes = buf.size() - b.indices_offset;
     while (buf.size() % 4 != 0) buf.push_back(0);
+    return b;
+}
 
-    tinygltf::Model model;
-    model.asset.version = "2.0";
-    model.asset.generator = "singlestrip";
+int add_view(tinygltf::Model& model, size_t offset, size_t length, int target) {
+    tinygltf::BufferView v;
+    v.buffer = 0;
+    v.byteOffset = offset;
+    v.byteLength = length;
+    v.target = target;
+    model.bufferViews.push_back(v);
+    return static_cast<int>(model.bufferViews.size() - 1);
+}
 
+tinygltf::Accessor accessor(int view, int component_type, size_t count, int type) {
+    tinygltf::Accessor acc;
+    acc.bufferView = view;
+    acc.componentType = component_type;
+    acc.count = count;
+    acc.type = type;
+    return acc;
+}
+
+/// Buffer 0 with its three views and accessors 0 (POSITION), 1 (NORMAL) and 2 (indices).
+void add_strip_accessors(tinygltf::Model& model, StripBuffer b, size_t nv, size_t num_indices, bool short_indices) {
     tinygltf::Buffer buffer;
-    buffer.data = std::move(buf);
+    buffer.data = std::move(b.bytes);
     model.buffers.push_back(std::move(buffer));
+    const int pos_view = add_view(model, 0, nv * 12, kArrayBuffer);
+    const int nrm_view = add_view(model, b.normals_offset, nv * 12, kArrayBuffer);
+    const int idx_view = add_view(model, b.indices_offset, b.indices_bytes, kElementArrayBuffer);
 
-    auto add_view = [&](size_t offset, size_t length, int target) {
-        tinygltf::BufferView v;
-        v.buffer = 0;
-        v.byteOffset = offset;
-        v.byteLength = length;
-        v.target = target;
-        model.bufferViews.push_back(v);
-        return static_cast<int>(model.bufferViews.size() - 1);
-    };
-    const int pos_view = add_view(0, nv * 12, kArrayBuffer);
-    const int nrm_view = add_view(normals_offset, nv * 12, kArrayBuffer);
-    const int idx_view = add_view(indices_offset, indices_bytes, kElementArrayBuffer);
-
-    tinygltf::Accessor pos;
-    pos.bufferView = pos_view;
-    pos.componentType = TINYGLTF_COMPONENT_TYPE_FLOAT;
-    pos.count = nv;
-    pos.type = TINYGLTF_TYPE_VEC3;
-    pos.minValues.assign(pmin.begin(), pmin.end());
-    pos.maxValues.assign(pmax.begin(), pmax.end());
+    tinygltf::Accessor pos = accessor(pos_view, TINYGLTF_COMPONENT_TYPE_FLOAT, nv, TINYGLTF_TYPE_VEC3);
+    pos.minValues.assign(b.pmin.begin(), b.pmin.end());
+    pos.maxValues.assign(b.pmax.begin(), b.pmax.end());
     model.accessors.push_back(pos);
+    model.accessors.push_back(accessor(nrm_view, TINYGLTF_COMPONENT_TYPE_FLOAT, nv, TINYGLTF_TYPE_VEC3));
+    const int index_type = short_indices ? TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT : TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
+    model.accessors.push_back(accessor(idx_view, index_type, num_indices, TINYGLTF_TYPE_SCALAR));
+}
 
-    tinygltf::Accessor nrm;
-    nrm.bufferView = nrm_view;
-    nrm.componentType = TINYGLTF_COMPONENT_TYPE_FLOAT;
-    nrm.count = nv;
-    nrm.type = TINYGLTF_TYPE_VEC3;
-    model.accessors.push_back(nrm);
-
-    tinygltf::Accessor idx;
-    idx.bufferView = idx_view;
-    idx.componentType = short_indices ? TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT : TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
-    idx.count = strip_indices.size();
-    idx.type = TINYGLTF_TYPE_SCALAR;
-    model.accessors.push_back(idx);
-
+/// Mesh 0 ("strip", one triangle-strip primitive with the attributes that fit), node 0, scene 0.
+void add_strip_scene(tinygltf::Model& model, const std::vector<VertexAttribute>& attributes, size_t nv) {
     tinygltf::Primitive prim;
     prim.attributes["POSITION"] = 0;
     prim.attributes["NORMAL"] = 1;
     prim.indices = 2;
     prim.mode = TINYGLTF_MODE_TRIANGLE_STRIP;
-    for (const VertexAttribute& at : a.attributes)
+    for (const VertexAttribute& at : attributes)
         if (const std::string name = gltf_name(at); !name.empty() && at.values.size() == nv * at.components && !prim.attributes.count(name))
             add_attribute(model, prim, name, at);
     tinygltf::Mesh mesh;
@@ -219,6 +224,25 @@ void write_gltf_strip(const std::string& path, const StripArrays& a, const std::
     scene.nodes.push_back(0);
     model.scenes.push_back(scene);
     model.defaultScene = 0;
+}
+
+}  // namespace
+
+void write_gltf_strip(const std::string& path, const StripArrays& a, const std::vector<uint32_t>& strip_indices) {
+    const std::string ext = lower_extension(path);
+    if (ext != ".glb" && ext != ".gltf") throw RequestError(path + ": glTF output needs the extension .glb or .gltf");
+    if (strip_indices.empty() || a.faces.empty()) throw RequestError(path + ": nothing to write (empty strip)");
+    const size_t nv = a.points.size();
+    const bool short_indices = max_strip_index(path, strip_indices, nv) < 65535u;  // 65535 is the (forbidden) restart value
+
+    const VertexAttribute* given = find_attribute(a.attributes, "NORMAL");
+    const std::vector<Point3> normals = given && given->components == 3 ? attribute_normals(*given, nv) : vertex_normals(a.points, a.faces);
+
+    tinygltf::Model model;
+    model.asset.version = "2.0";
+    model.asset.generator = "singlestrip";
+    add_strip_accessors(model, pack_strip_buffer(a.points, normals, strip_indices, short_indices), nv, strip_indices.size(), short_indices);
+    add_strip_scene(model, a.attributes, nv);
 
     tinygltf::TinyGLTF writer;
     std::ostringstream out(std::ios::binary);

@@ -8,7 +8,6 @@
 #include <utility>
 #include <vector>
 
-#include "core/soup_edges.hpp"
 #include "singlestrip/encode.hpp"
 #include "singlestrip/errors.hpp"
 #include "singlestrip/mesh.hpp"
@@ -87,9 +86,8 @@ std::vector<uint32_t> part_order(const Split& sp, const StripOptions& o) {
     return order;
 }
 
-/// The request of part c in local numbers. Checks global requests first (global messages).
-StripOptions part_options(const Split& sp, const std::vector<uint32_t>& comp, const StripOptions& o, uint32_t c,
-                          const std::vector<std::pair<uint32_t, uint32_t>>& edges_ok) {
+/// The request of part c in local numbers (check_requests() has named what is wrong globally).
+StripOptions part_options(const Split& sp, const std::vector<uint32_t>& comp, const StripOptions& o, uint32_t c) {
     StripOptions local = o;
     local.seed_face.reset();
     local.source.reset();
@@ -98,11 +96,13 @@ StripOptions part_options(const Split& sp, const std::vector<uint32_t>& comp, co
     if (o.seed_face && comp[o.seed_face->idx()] == c) local.seed_face = FaceId(sp.local_face[o.seed_face->idx()]);
     if (o.source && sp.vertex_part[o.source->idx()] == c) local.source = VertexId(sp.local_vertex[o.source->idx()]);
     if (o.target && sp.vertex_part[o.target->idx()] == c) local.target = VertexId(sp.local_vertex[o.target->idx()]);
-    for (const auto& [u, v] : edges_ok)
-        if (sp.vertex_part[u] == c) local.constraint_edges.emplace_back(sp.local_vertex[u], sp.local_vertex[v]);
+    for (const ConstraintEdge& e : o.constraint_edges)
+        if (sp.vertex_part[e.a] == c) local.constraint_edges.push_back({sp.local_vertex[e.a], sp.local_vertex[e.b], e.line});
     return local;
 }
 
+/// The seed face is checked on the whole input, so that its message gives input numbers (stripify()
+/// checked the constraint edges).
 void check_requests(const TriangleSoup& s, const StripOptions& o) {
     const auto nf = s.triangles.size();
     if (o.seed_face && o.seed_face->idx() >= nf)
@@ -113,14 +113,6 @@ void check_requests(const TriangleSoup& s, const StripOptions& o) {
         if (t[0] != o.source->idx() && t[1] != o.source->idx() && t[2] != o.source->idx())
             throw RequestError("seed face " + std::to_string(o.seed_face->idx()) + " is not incident to source vertex " +
                                std::to_string(o.source->idx()));
-    }
-    if (o.constraint_edges.empty()) return;
-    const SoupEdges edges(s.triangles, s.points.size());
-    for (std::size_t i = 0; i < o.constraint_edges.size(); ++i) {
-        const uint32_t a = o.constraint_edges[i].first, b = o.constraint_edges[i].second;
-        if (!edges.has_edge(a, b))
-            throw RequestError("constraint " + std::to_string(i) + ": (" + std::to_string(a) + ", " + std::to_string(b) +
-                               ") is not an edge of the mesh");
     }
 }
 
@@ -192,7 +184,7 @@ void strip_components(PipelineResult& r, const std::vector<uint32_t>& comp, uint
     for (uint32_t c : part_order(sp, o)) {
         const Part& p = sp.parts[c];
         if (stage) *stage = PipelineStage::Strip;
-        const StripResult res = strip_part(p, part_options(sp, comp, o, c, o.constraint_edges), c, count, r.options.self_check);
+        const StripResult res = strip_part(p, part_options(sp, comp, o, c), c, count, r.options.self_check);
         if (stage) *stage = PipelineStage::Encode;
         const std::size_t first = r.arrays.faces.size();
         append_arrays(r, p, res);

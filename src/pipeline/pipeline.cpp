@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "components.hpp"
+#include "core/soup_edges.hpp"
 #include "singlestrip/attributes.hpp"
 #include "singlestrip/encode.hpp"
 #include "singlestrip/errors.hpp"
@@ -34,17 +35,21 @@ void enter(PipelineStage* stage, PipelineStage s) {
     if (stage) *stage = s;
 }
 
-void append_constraint_file(const std::string& path, uint32_t index_base, const TriangleSoup& soup, StripOptions& strip) {
-    const std::vector<ConstraintEdge> edges = read_constraints_based(path, static_cast<uint32_t>(soup.points.size()), index_base);
-    try {
-        check_constraint_edges(path, edges, soup);
-    } catch (const RequestError& e) {
-        if (index_base == 0) throw;
-        // The check names the pair 0-based; say so rather than show numbers the file lacks.
-        throw RequestError(std::string(e.what()) + " (vertex numbers counted from 0 here: add 1 for the file's numbering)");
+/// The one check that each constraint edge is an edge of the soup; the engines then only look
+/// the half-edges up. \throw RequestError naming the edge by its file line, or by its index when
+/// it was given as a pair.
+void check_constraint_edges(const TriangleSoup& soup, const std::vector<ConstraintEdge>& constraints, const PipelineOptions& options) {
+    const SoupEdges edges(soup.triangles, soup.points.size());
+    for (std::size_t i = 0; i < constraints.size(); ++i) {
+        const ConstraintEdge& e = constraints[i];
+        if (edges.has_edge(e.a, e.b)) continue;
+        const std::string pair = "(" + std::to_string(e.a) + ", " + std::to_string(e.b) + ") is not an edge of the mesh";
+        if (e.line == 0 || !options.constraints_file) throw RequestError("constraint " + std::to_string(i) + ": " + pair);
+        const std::string where = *options.constraints_file + ": line " + std::to_string(e.line) + ": ";
+        if (options.index_base == 0) throw RequestError(where + pair);
+        // The pair is shown 0-based; say so rather than show numbers the file lacks.
+        throw RequestError(where + pair + " (vertex numbers counted from 0 here: add 1 for the file's numbering)");
     }
-    const auto pairs = vertex_pairs(edges);
-    strip.constraint_edges.insert(strip.constraint_edges.end(), pairs.begin(), pairs.end());
 }
 
 // prepare_soup() promises a soup Mesh::from_soup() accepts: a refusal here is a bug.
@@ -177,9 +182,16 @@ PipelineResult stripify(TriangleSoup soup, const PipelineOptions& options, Pipel
         throw InputError(options.name + ": " + bad);
     soup = pre_repair(std::move(soup), options, r);
     r.input = prepare_soup(std::move(soup), PrepareOptions{options.orient || options.repair}, options.name);
+    std::vector<ConstraintEdge>& constraints = r.options.strip.constraint_edges;
     if (options.constraints_file) {
         enter(stage, PipelineStage::Constraints);
-        append_constraint_file(*options.constraints_file, options.index_base, r.input, r.options.strip);
+        const auto nv = static_cast<uint32_t>(r.input.points.size());
+        const std::vector<ConstraintEdge> read = read_constraints_based(*options.constraints_file, nv, options.index_base);
+        constraints.insert(constraints.end(), read.begin(), read.end());
+    }
+    if (!constraints.empty()) {
+        enter(stage, PipelineStage::Constraints);
+        check_constraint_edges(r.input, constraints, options);
     }
     uint32_t count = 0;
     const std::vector<uint32_t> comp = face_components(r.input, &count);

@@ -182,51 +182,34 @@ public:
         const bool file_le = format_ == 1;
         if (file_le != (std::endian::native == std::endian::little)) std::reverse(b, b + n);
         switch (t) {
-            case PlyType::I8: {
-                int8_t x;
-                std::memcpy(&x, b, 1);
-                return x;
-            }
-            case PlyType::U8: {
-                uint8_t x;
-                std::memcpy(&x, b, 1);
-                return x;
-            }
-            case PlyType::I16: {
-                int16_t x;
-                std::memcpy(&x, b, 2);
-                return x;
-            }
-            case PlyType::U16: {
-                uint16_t x;
-                std::memcpy(&x, b, 2);
-                return x;
-            }
-            case PlyType::I32: {
-                int32_t x;
-                std::memcpy(&x, b, 4);
-                return x;
-            }
-            case PlyType::U32: {
-                uint32_t x;
-                std::memcpy(&x, b, 4);
-                return x;
-            }
-            case PlyType::F32: {
-                float x;
-                std::memcpy(&x, b, 4);
-                return x;
-            }
-            case PlyType::F64: {
-                double x;
-                std::memcpy(&x, b, 8);
-                return x;
-            }
+            case PlyType::I8:
+                return load<int8_t>(b);
+            case PlyType::U8:
+                return load<uint8_t>(b);
+            case PlyType::I16:
+                return load<int16_t>(b);
+            case PlyType::U16:
+                return load<uint16_t>(b);
+            case PlyType::I32:
+                return load<int32_t>(b);
+            case PlyType::U32:
+                return load<uint32_t>(b);
+            case PlyType::F32:
+                return load<float>(b);
+            case PlyType::F64:
+                return load<double>(b);
         }
         return 0;
     }
 
 private:
+    template <class T>
+    static double load(const unsigned char* b) {
+        T x;
+        std::memcpy(&x, b, sizeof x);
+        return static_cast<double>(x);
+    }
+
     double next_ascii(const std::string& where) {
         while (pos_ < data_.size() && std::isspace(static_cast<unsigned char>(data_[pos_]))) ++pos_;
         if (pos_ >= data_.size()) fail(path_, "truncated ASCII data (" + where + ")");
@@ -319,8 +302,66 @@ std::vector<OutputAttribute> ply_attributes(const std::vector<PlyProperty>& prop
     return out;
 }
 
+struct PlyHeader {
+    int format = -1;  // 0 ascii, 1 binary little endian, 2 binary big endian
+    std::vector<PlyElement> elements;
+};
+
+int ply_format(const std::string& path, const std::vector<std::string_view>& tok) {
+    if (tok.size() < 2) fail(path, "bad format line");
+    if (tok[1] == "ascii") return 0;
+    if (tok[1] == "binary_little_endian") return 1;
+    if (tok[1] == "binary_big_endian") return 2;
+    fail(path, "unknown PLY format '" + std::string(tok[1]) + "'");
+}
+
+PlyProperty ply_property(const std::string& path, const std::vector<std::string_view>& tok, const std::string& where) {
+    PlyProperty p;
+    if (tok.size() == 5 && tok[1] == "list") {
+        p.is_list = true;
+        if (!ply_type(tok[2], p.count_type) || !ply_type(tok[3], p.type)) fail(path, "bad property type (" + where + ")");
+        p.name = std::string(tok[4]);
+    } else if (tok.size() == 3) {
+        if (!ply_type(tok[1], p.type)) fail(path, "bad property type (" + where + ")");
+        p.name = std::string(tok[2]);
+    } else {
+        fail(path, "bad property line (" + where + ")");
+    }
+    return p;
+}
+
+PlyHeader parse_ply_header(const std::string& path, std::string_view header) {
+    PlyHeader h;
+    const auto header_lines = split_lines(header);
+    for (size_t li = 1; li < header_lines.size(); ++li) {
+        const auto tok = split_ws(header_lines[li]);
+        if (tok.empty() || tok[0] == "comment" || tok[0] == "obj_info") continue;
+        const std::string where = "header line " + std::to_string(li + 1);
+        if (tok[0] == "format") {
+            h.format = ply_format(path, tok);
+        } else if (tok[0] == "element") {
+            long long count = 0;
+            if (tok.size() != 3 || !parse_long(tok[2], count) || count < 0) fail(path, "bad element line (" + where + ")");
+            h.elements.push_back({std::string(tok[1]), static_cast<size_t>(count), {}});
+        } else if (tok[0] == "property") {
+            if (h.elements.empty()) fail(path, "property before any element (" + where + ")");
+            h.elements.back().props.push_back(ply_property(path, tok, where));
+        } else {
+            fail(path, "unexpected header keyword '" + std::string(tok[0]) + "' (" + where + ")");
+        }
+    }
+    if (h.format < 0) fail(path, "missing format line");
+    return h;
+}
+
+/// Reads and discards one list property's values.
+void skip_ply_list(const std::string& path, PlySource& src, const PlyProperty& p, const std::string& where) {
+    const uint32_t k = as_index(path, src.next(p.count_type, where), where);
+    for (uint32_t j = 0; j < k; ++j) src.next(p.type, where);
+}
+
 /// The `vertex` element: positions, and every other scalar property as an attribute.
-void read_ply_vertices(const std::string& path, const PlyElement& el, PlySource& src, size_t data_size, OutputMesh& m) {
+void read_ply_vertices(const std::string& path, const PlyElement& el, size_t data_size, PlySource& src, OutputMesh& m) {
     int ix = -1, iy = -1, iz = -1;
     for (size_t i = 0; i < el.props.size(); ++i) {
         if (el.props[i].is_list) continue;
@@ -337,9 +378,7 @@ void read_ply_vertices(const std::string& path, const PlyElement& el, PlySource&
         for (size_t i = 0; i < el.props.size(); ++i) {
             const PlyProperty& p = el.props[i];
             if (p.is_list) {
-                const double k = src.next(p.count_type, where);
-                const uint32_t kk = as_index(path, k, where);
-                for (uint32_t j = 0; j < kk; ++j) src.next(p.type, where);
+                skip_ply_list(path, src, p, where);
                 continue;
             }
             const double val = src.next(p.type, where);
@@ -354,7 +393,7 @@ void read_ply_vertices(const std::string& path, const PlyElement& el, PlySource&
 }
 
 /// The `face` element: triangles (`vertex_indices`) and the optional `parent` of each.
-void read_ply_faces(const std::string& path, const PlyElement& el, PlySource& src, size_t data_size, OutputMesh& m) {
+void read_ply_faces(const std::string& path, const PlyElement& el, size_t data_size, PlySource& src, OutputMesh& m) {
     int ilist = -1, iparent = -1;
     for (size_t i = 0; i < el.props.size(); ++i) {
         const PlyProperty& p = el.props[i];
@@ -369,18 +408,29 @@ void read_ply_faces(const std::string& path, const PlyElement& el, PlySource& sr
         const std::string where = "face " + std::to_string(f);
         for (size_t i = 0; i < el.props.size(); ++i) {
             const PlyProperty& p = el.props[i];
-            if (p.is_list) {
+            if (p.is_list && static_cast<int>(i) == ilist) {
                 const uint32_t k = as_index(path, src.next(p.count_type, where), where);
-                if (static_cast<int>(i) == ilist && k != 3)
-                    fail(path, where + " has " + std::to_string(k) + " vertices, expected a triangle");
-                for (uint32_t j = 0; j < k; ++j) {
-                    const double val = src.next(p.type, where);
-                    if (static_cast<int>(i) == ilist) m.faces[f][j] = as_index(path, val, where);
-                }
-                continue;
+                if (k != 3) fail(path, where + " has " + std::to_string(k) + " vertices, expected a triangle");
+                for (uint32_t j = 0; j < k; ++j) m.faces[f][j] = as_index(path, src.next(p.type, where), where);
+            } else if (p.is_list) {
+                skip_ply_list(path, src, p, where);
+            } else {
+                const double val = src.next(p.type, where);
+                if (static_cast<int>(i) == iparent) m.parent[f] = as_index(path, val, where + " parent");
             }
-            const double val = src.next(p.type, where);
-            if (static_cast<int>(i) == iparent) m.parent[f] = as_index(path, val, where + " parent");
+        }
+    }
+}
+
+/// An element other than vertex and face: its values are read and discarded.
+void skip_ply_element(const std::string& path, const PlyElement& el, PlySource& src) {
+    for (size_t r = 0; r < el.count; ++r) {
+        const std::string where = el.name + " " + std::to_string(r);
+        for (const PlyProperty& p : el.props) {
+            if (p.is_list)
+                skip_ply_list(path, src, p, where);
+            else
+                src.next(p.type, where);
         }
     }
 }
@@ -392,73 +442,22 @@ OutputMesh read_ply(const std::string& path) {
     if (text.rfind("ply", 0) != 0 || end_header == std::string::npos) fail(path, "not a PLY file (bad header)");
     size_t data_start = text.find('\n', end_header);
     data_start = data_start == std::string::npos ? text.size() : data_start + 1;
+    const PlyHeader header = parse_ply_header(path, std::string_view(text).substr(0, end_header));
 
-    int format = -1;
-    std::vector<PlyElement> elements;
-    const auto header_lines = split_lines(std::string_view(text).substr(0, end_header));
-    for (size_t li = 1; li < header_lines.size(); ++li) {
-        const auto tok = split_ws(header_lines[li]);
-        if (tok.empty() || tok[0] == "comment" || tok[0] == "obj_info") continue;
-        const std::string where = "header line " + std::to_string(li + 1);
-        if (tok[0] == "format") {
-            if (tok.size() < 2) fail(path, "bad format line");
-            if (tok[1] == "ascii")
-                format = 0;
-            else if (tok[1] == "binary_little_endian")
-                format = 1;
-            else if (tok[1] == "binary_big_endian")
-                format = 2;
-            else
-                fail(path, "unknown PLY format '" + std::string(tok[1]) + "'");
-        } else if (tok[0] == "element") {
-            long long count = 0;
-            if (tok.size() != 3 || !parse_long(tok[2], count) || count < 0) fail(path, "bad element line (" + where + ")");
-            elements.push_back({std::string(tok[1]), static_cast<size_t>(count), {}});
-        } else if (tok[0] == "property") {
-            if (elements.empty()) fail(path, "property before any element (" + where + ")");
-            PlyProperty p;
-            if (tok.size() == 5 && tok[1] == "list") {
-                p.is_list = true;
-                if (!ply_type(tok[2], p.count_type) || !ply_type(tok[3], p.type)) fail(path, "bad property type (" + where + ")");
-                p.name = std::string(tok[4]);
-            } else if (tok.size() == 3) {
-                if (!ply_type(tok[1], p.type)) fail(path, "bad property type (" + where + ")");
-                p.name = std::string(tok[2]);
-            } else {
-                fail(path, "bad property line (" + where + ")");
-            }
-            elements.back().props.push_back(p);
-        } else {
-            fail(path, "unexpected header keyword '" + std::string(tok[0]) + "' (" + where + ")");
-        }
-    }
-    if (format < 0) fail(path, "missing format line");
-
-    // Guard against absurd counts before reserving (truncated or hostile headers).
+    // Counts are checked against the data size before reserving (truncated or hostile headers).
     const size_t data_size = text.size() - data_start;
     OutputMesh m;
-    PlySource src(path, std::string_view(text).substr(data_start), format);
+    PlySource src(path, std::string_view(text).substr(data_start), header.format);
     bool have_vertex = false, have_face = false;
-    for (const PlyElement& el : elements) {
+    for (const PlyElement& el : header.elements) {
         if (el.name == "vertex") {
             have_vertex = true;
-            read_ply_vertices(path, el, src, data_size, m);
+            read_ply_vertices(path, el, data_size, src, m);
         } else if (el.name == "face") {
             have_face = true;
-            read_ply_faces(path, el, src, data_size, m);
+            read_ply_faces(path, el, data_size, src, m);
         } else {
-            // Unknown element: read and discard its values.
-            for (size_t r = 0; r < el.count; ++r) {
-                const std::string where = el.name + " " + std::to_string(r);
-                for (const PlyProperty& p : el.props) {
-                    if (p.is_list) {
-                        const uint32_t k = as_index(path, src.next(p.count_type, where), where);
-                        for (uint32_t j = 0; j < k; ++j) src.next(p.type, where);
-                    } else {
-                        src.next(p.type, where);
-                    }
-                }
-            }
+            skip_ply_element(path, el, src);
         }
     }
     if (!have_vertex || !have_face) fail(path, "PLY lacks a vertex or face element");

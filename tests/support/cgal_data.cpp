@@ -60,4 +60,14 @@ std::string cgal_mesh_path(const std::string& name) {
     return dir.empty() ? std::string() : find_in(dir, name);
 }
 
+const std::vector<KnownTopology>& known_topologies() {
+    static const std::vector<KnownTopology> meshes = {{"fandisk.off", 0, 0},
+                                                      {"head.off", 0, 3},
+                                                      {"eight.off", 2, 0},
+                                                      {"cheese.off", 133, 0},
+                                                      {"elephant-with-holes.off", 3, 106},
+                                                      {"double-torus-3-holes.off", 2, 3}};
+    return meshes;
+}
+
 }  // namespace singlestrip::test

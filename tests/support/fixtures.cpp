@@ -381,6 +381,13 @@ std::vector<std::pair<uint32_t, uint32_t>> polyline_edges(const Polylines& lines
     return edges;
 }
 
+std::vector<ConstraintEdge> as_constraints(const std::vector<std::pair<uint32_t, uint32_t>>& pairs) {
+    std::vector<ConstraintEdge> edges;
+    edges.reserve(pairs.size());
+    for (const auto& [a, b] : pairs) edges.push_back({a, b});
+    return edges;
+}
+
 TriangleSoup make_hole_corridors(uint32_t holes, uint32_t length) {
     require(length >= 1, "hole corridors need length >= 1");
     return make_grid_cells(length + 2, 2 * holes + 1, 1.0,

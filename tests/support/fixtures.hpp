@@ -96,8 +96,11 @@ TriangleSoup make_moebius_soup(uint32_t n);
 /// the shape of a constraints file.
 using Polylines = std::vector<std::vector<uint32_t>>;
 
-/// The edges of `lines` as vertex pairs, in order (StripOptions::constraint_edges). O(total length).
+/// The edges of `lines` as vertex pairs, in order. O(total length).
 std::vector<std::pair<uint32_t, uint32_t>> polyline_edges(const Polylines& lines);
+
+/// Vertex pairs as StripOptions::constraint_edges (line 0: given directly, not read from a file).
+std::vector<ConstraintEdge> as_constraints(const std::vector<std::pair<uint32_t, uint32_t>>& pairs);
 
 /// A mesh with constraint walls that leave its faces edge-connected (walls may be empty).
 struct WalledMesh {

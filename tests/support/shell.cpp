@@ -1,6 +1,7 @@
 #include "shell.hpp"
 
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <array>
 #include <cstdio>
@@ -20,6 +21,25 @@ ShellRun run_shell(const std::string& cmd) {
 
 std::string shell_quote(const std::string& s) {
     return "'" + s + "'";
+}
+
+ShellRun run_program(const std::string& exe, const std::string& args) {
+    return run_shell(shell_quote(exe) + " " + args + " 2>&1");
+}
+
+ScratchDir::ScratchDir(const std::string& tag)
+    : dir(std::filesystem::temp_directory_path() / ("singlestrip-test-" + tag + "-" + std::to_string(::getpid()))) {
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+}
+
+ScratchDir::~ScratchDir() {
+    std::error_code ec;
+    std::filesystem::remove_all(dir, ec);
+}
+
+std::string ScratchDir::operator/(const std::string& name) const {
+    return (dir / name).string();
 }
 
 }  // namespace singlestrip::test

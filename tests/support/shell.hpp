@@ -1,6 +1,7 @@
 // Test helper: running a command line (the CLI, scripts) and collecting what it prints.
 #pragma once
 
+#include <filesystem>
 #include <string>
 
 namespace singlestrip::test {
@@ -15,5 +16,20 @@ ShellRun run_shell(const std::string& cmd);
 
 /// `s` in single quotes for the shell (test paths hold no single quote).
 std::string shell_quote(const std::string& s);
+
+/// Runs the program `exe` with `args` (shell-quoted where needed), standard error merged into `out`.
+ShellRun run_program(const std::string& exe, const std::string& args);
+
+/// A fresh empty directory <temp>/singlestrip-test-<tag>-<pid> (the pid keeps parallel test
+/// processes apart), removed with its contents when the object goes.
+struct ScratchDir {
+    explicit ScratchDir(const std::string& tag);
+    ~ScratchDir();
+    ScratchDir(const ScratchDir&) = delete;
+    ScratchDir& operator=(const ScratchDir&) = delete;
+    /// The path of `name` inside the directory.
+    std::string operator/(const std::string& name) const;
+    std::filesystem::path dir;
+};
 
 }  // namespace singlestrip::test

@@ -1,5 +1,6 @@
 #include "strip_check.hpp"
 
+#include "singlestrip/io.hpp"
 #include "singlestrip/pipeline.hpp"
 
 namespace singlestrip {
@@ -22,7 +23,7 @@ StripCheck strip_and_verify(const TriangleSoup& soup, const StripOptions& option
     c.arrays = std::move(r.arrays);
     c.indices = std::move(r.indices);
     VerifyInput in = verify_input(soup, c.arrays, c.indices);
-    in.constraints = options.constraint_edges;
+    in.constraints = vertex_pairs(options.constraint_edges);
     in.source = index_of(options.source);
     in.target = index_of(options.target);
     c.report = verify(in);
