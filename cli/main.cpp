@@ -246,6 +246,7 @@ ss::PipelineOptions pipeline_options(const StripArgs& a) {
     o.name = a.input;
     o.constraints_file = a.constraints;
     o.index_base = a.index_base;
+    o.release_intermediates = true;  // only the arrays, indices, cycles and stats are written
     return o;
 }
 

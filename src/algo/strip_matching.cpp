@@ -15,6 +15,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/gentle_growth.hpp"
 #include "matching_builder.hpp"
 #include "singlestrip/errors.hpp"
 #include "singlestrip/strip.hpp"
@@ -61,13 +62,17 @@ SplitResult MatchingBuilder::split(uint32_t h) {
     ++stats_.splits;
     const uint32_t fb0 = 3 * sr.f_b.idx(), ga0 = 3 * sr.g_a.idx();
     for (auto* a : {&blocked_, &matched_, &used_}) {
+        reserve_gently(*a, mesh_.num_halfedges());
         a->resize(mesh_.num_halfedges(), 0);
         (*a)[fb0 + 1] = (*a)[hn];
         (*a)[ga0 + 1] = (*a)[tn];
         for (uint32_t x : {h, hn, t, tn, fb0, fb0 + 2, ga0, ga0 + 2}) (*a)[x] = 0;
     }
+    reserve_gently(vlink_, mesh_.num_faces());
+    reserve_gently(quota_, mesh_.num_faces());
     vlink_.resize(mesh_.num_faces(), 0);
     quota_.resize(mesh_.num_faces(), 0);
+    if (!sid_.empty()) reserve_gently(sid_, mesh_.num_faces());
     if (!sid_.empty()) sid_.resize(mesh_.num_faces(), sid_[sr.f_a.idx()]), sid_[sr.g_a.idx()] = sid_[sr.g_b.idx()];
     for (uint32_t i = 0; i < num_pins_; ++i) {
         const uint32_t v = (i == 0 && !reversed_) ? pin_vertex[0] : pin_vertex[1];
