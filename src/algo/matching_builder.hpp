@@ -92,6 +92,7 @@ private:
     std::vector<uint32_t> bl_touched_, bl_queue_, bl_merge_;
     uint32_t bl_search_ = 0, bl_mark_ = 0;
     void settle_leftovers();
+    void release_repair_scratch();
     void check_matching() const;
     void repair_short(std::vector<uint32_t>& short_faces);
     bool split_beside(uint32_t u);

@@ -20,6 +20,7 @@ Mesh Mesh::from_soup(TriangleSoup&& soup) {
     // The caller gave the soup up: free it now (assigning {} would keep the capacity).
     soup.points = std::vector<Point3>();
     soup.triangles = std::vector<Triangle>();
+    soup.source_polygon = std::vector<uint32_t>();
     return m;
 }
 
