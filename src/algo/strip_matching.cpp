@@ -57,6 +57,8 @@ void MatchingBuilder::choose_pins() {
 SplitResult MatchingBuilder::split(uint32_t h) {
     const uint32_t t = mesh_.twin(HalfedgeId(h)).idx(), hn = Mesh::next(HalfedgeId(h)).idx(), tn = Mesh::next(HalfedgeId(t)).idx();
     const uint32_t pin_vertex[2] = {opt_.source ? opt_.source->idx() : kNone, opt_.target ? opt_.target->idx() : kNone};
+    for (const uint32_t c : {hn, tn})  // the two corners split_edge() moves to the midpoint
+        if (c < 3 * mesh_.num_input_faces()) overwritten_.emplace_back(c, mesh_.corner_vertices()[c]);
     const SplitResult sr = mesh_.split_edge(HalfedgeId(h));
     if (opt_.validate_each_split) mesh_.validate();
     ++stats_.splits;
@@ -400,17 +402,17 @@ StripResult MatchingBuilder::finish_or_grow(std::vector<uint32_t> order) {
 Mesh MatchingBuilder::input_mesh() const {
     TriangleSoup soup;
     soup.points.assign(mesh_.points().begin(), mesh_.points().begin() + mesh_.num_input_vertices());
-    soup.triangles = input_faces_;
-    return Mesh::from_soup(soup);
+    const auto& cv = mesh_.corner_vertices();
+    soup.triangles.resize(mesh_.num_input_faces());
+    for (uint32_t f = 0; f < soup.triangles.size(); ++f) soup.triangles[f] = {cv[3 * f], cv[3 * f + 1], cv[3 * f + 2]};
+    for (auto it = overwritten_.rbegin(); it != overwritten_.rend(); ++it) soup.triangles[it->first / 3][it->first % 3] = it->second;
+    return Mesh::from_soup(std::move(soup));
 }
 
 StripResult MatchingBuilder::run() {
     const uint32_t nf = mesh_.num_faces();
     check_strip_request(mesh_, opt_);
     blocked_ = constraint_halfedges(mesh_, opt_);
-    input_faces_.resize(nf);
-    for (uint32_t f = 0; f < nf; ++f)
-        for (uint32_t k = 0; k < 3; ++k) input_faces_[f][k] = mesh_.corner_vertices()[3 * f + k];
     stats_.input_triangles = nf;
     stats_.boundary_loops = mesh_.num_boundary_loops();
     stats_.genus = mesh_.genus();
