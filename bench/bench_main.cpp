@@ -908,7 +908,7 @@ std::string constraints_table(const std::vector<Row>& rows) {
         if (!row.has_constraints) continue;
         const ConstraintRun& c = row.con;
         if (c.status != 0) {
-            o << "| " << row.spec.name << " | | | | " << (c.status == 1 ? "skipped" : "failed: ") << c.message << " |\n";
+            o << "| " << row.spec.name << " | | | | " << (c.status == 1 ? "skipped: " : "failed: ") << c.message << " |\n";
             continue;
         }
         double edges = 0;
