@@ -438,7 +438,14 @@ Cycles compute_fundamental_cycles(const StripResult& result) {
     // each candidate's class is computed and checked against those kept.
     FaceSearch search(mesh);
     std::vector<Candidate> chosen;
-    const bool nested = !recorded && choose_nested(view, search, fundamental, rank_of(mesh), chosen);
+    bool nested = !recorded && choose_nested(view, search, fundamental, rank_of(mesh), chosen);
+    // The growth builder's own triangles need classes: a dense Z2 basis of (2g)^2 bits and a
+    // class per candidate, O(g) each (g^2 in all). The replay of its order usually needs none,
+    // so the cost follows the cycles' length; classes only when the replay's conditions fail.
+    if (!nested && recorded) {
+        const StripView replayed{mesh, result.order, pos, pos};
+        nested = choose_nested(replayed, search, replay_fundamental_positions(mesh, result.order), rank_of(mesh), chosen);
+    }
     if (!nested) chosen = choose_independent(view, search, fundamental);
 
     Cycles out;
