@@ -8,7 +8,6 @@
 
 #include <cstdint>
 #include <initializer_list>
-#include <optional>
 #include <utility>
 #include <vector>
 
@@ -45,7 +44,10 @@ private:
     /// with the current corners it gives back the input (input_mesh()) for 8 bytes a split
     /// instead of a 12-byte copy of every face.
     std::vector<std::pair<uint32_t, uint32_t>> overwritten_;
-    std::optional<Mesh> pre_merge_;  ///< the mesh before the joins, kept when paths remain
+    std::vector<uint32_t> split_log_;  ///< the half-edge of every split, in order
+    /// Paths remain: the mesh before the joins (its first pre_merge_splits_ splits) is a fallback
+    /// candidate, replayed from the input then instead of kept as a copy (36 bytes a face).
+    bool pre_merge_ = false;
     uint32_t pre_merge_splits_ = 0;
     // Augmenting search, per face: the outer face it was reached from and the two edges used.
     std::vector<uint32_t> aug_prev_, aug_matched_, aug_unmatched_, aug_queue_;

@@ -247,7 +247,7 @@ void MatchingBuilder::settle_leftovers() {
     collect();
     repair_short(short_faces);
     if (!short_faces.empty()) {  // the growth builder may have to finish (fallback())
-        pre_merge_ = mesh_;
+        pre_merge_ = true;
         pre_merge_splits_ = stats_.splits;
     }
     // Still short: the matching is maximum there; splits beside short faces, while they help.
@@ -272,7 +272,7 @@ void MatchingBuilder::settle_leftovers() {
                 --quota_[f];
             }
     stats_.unmatched = static_cast<uint32_t>(short_faces.size());
-    if (short_faces.empty()) pre_merge_.reset();  // loops only: no fallback ahead
+    if (short_faces.empty()) pre_merge_ = false;  // loops only: no fallback ahead
     release_repair_scratch();
 }
 

@@ -59,6 +59,7 @@ SplitResult MatchingBuilder::split(uint32_t h) {
     const uint32_t pin_vertex[2] = {opt_.source ? opt_.source->idx() : kNone, opt_.target ? opt_.target->idx() : kNone};
     for (const uint32_t c : {hn, tn})  // the two corners split_edge() moves to the midpoint
         if (c < 3 * mesh_.num_input_faces()) overwritten_.emplace_back(c, mesh_.corner_vertices()[c]);
+    split_log_.push_back(h);
     const SplitResult sr = mesh_.split_edge(HalfedgeId(h));
     if (opt_.validate_each_split) mesh_.validate();
     ++stats_.splits;
@@ -377,7 +378,11 @@ StripResult MatchingBuilder::fallback() {
     Mesh original = input_mesh();  // before mesh_ is handed over
     StripResult r;
     keep_better(r, grow(std::move(mesh_), stats_.splits));
-    if (pre_merge_) keep_better(r, grow(std::move(*pre_merge_), pre_merge_splits_));  // without the joins' splits
+    if (pre_merge_) {  // without the joins' splits: split numbering is deterministic, so a replay rebuilds it
+        Mesh pre(original);
+        for (uint32_t i = 0; i < pre_merge_splits_; ++i) pre.split_edge(HalfedgeId(split_log_[i]));
+        keep_better(r, grow(std::move(pre), pre_merge_splits_));
+    }
     keep_better(r, grow(Mesh(original), 0));
     if (r.order.empty()) {  // the growth builder's own case, with its own errors
         StripOptions o = opt_;
