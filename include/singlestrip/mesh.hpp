@@ -189,7 +189,7 @@ public:
 
 private:
     // Steps of from_soup().
-    static Mesh build(const std::vector<Triangle>& triangles, std::vector<Point3> points);
+    static Mesh build(const std::vector<Triangle>& triangles, std::vector<Point3> points, std::vector<Triangle>* release = nullptr);
     void reserve_for_split();
     void pair_halfedges(const SoupEdges& edges);
     void assign_vertex_halfedges();

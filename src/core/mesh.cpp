@@ -16,36 +16,40 @@ Mesh Mesh::from_soup(const TriangleSoup& soup) {
 }
 
 Mesh Mesh::from_soup(TriangleSoup&& soup) {
-    Mesh m = build(soup.triangles, std::move(soup.points));
-    // The caller gave the soup up: free it now (assigning {} would keep the capacity).
-    soup.points = std::vector<Point3>();
-    soup.triangles = std::vector<Triangle>();
+    // The caller gave the soup up: free it as soon as it is copied (assigning {} would keep
+    // the capacity); build() frees the triangles once the corners hold them.
     soup.source_polygon = std::vector<uint32_t>();
+    Mesh m = build(soup.triangles, std::move(soup.points), &soup.triangles);
+    soup.points = std::vector<Point3>();
     return m;
 }
 
-Mesh Mesh::build(const std::vector<Triangle>& triangles, std::vector<Point3> points) {
+// The pairing's scratch (SoupEdges, 28 bytes a face while sorting) comes before the corner
+// table's arrays, and `release` (the soup's triangles) goes once the corners are filled: that
+// keeps the peak of a large mesh at about its corner table plus the soup.
+Mesh Mesh::build(const std::vector<Triangle>& triangles, std::vector<Point3> points, std::vector<Triangle>* release) {
     Mesh m;
     const size_t nf = triangles.size();
     if (nf >= kNone / 3) throw InputError("mesh has too many faces (" + std::to_string(nf) + ")");
     m.points_ = std::move(points);
     m.num_input_vertices_ = static_cast<uint32_t>(m.points_.size());
     m.num_input_faces_ = static_cast<uint32_t>(nf);
-    m.corner_vertex_.resize(3 * nf);
-    m.twin_.assign(3 * nf, kNone);
-    m.face_parent_.resize(nf);
-    std::iota(m.face_parent_.begin(), m.face_parent_.end(), 0u);
     for (size_t f = 0; f < nf; ++f) {
         const Triangle& t = triangles[f];
-        for (int k = 0; k < 3; ++k) {
+        for (int k = 0; k < 3; ++k)
             if (t[k] >= m.points_.size())
                 throw InputError("face " + std::to_string(f) + " references vertex " + std::to_string(t[k]) + " but there are only " +
                                  std::to_string(m.points_.size()) + " vertices");
-            m.corner_vertex_[3 * f + k] = t[k];
-        }
         if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) throw InputError("face " + std::to_string(f) + " repeats a vertex");
     }
+    m.twin_.assign(3 * nf, kNone);
     m.pair_halfedges(SoupEdges(triangles, m.points_.size()));
+    m.corner_vertex_.resize(3 * nf);
+    for (size_t f = 0; f < nf; ++f)
+        for (int k = 0; k < 3; ++k) m.corner_vertex_[3 * f + k] = triangles[f][k];
+    if (release) *release = std::vector<Triangle>();
+    m.face_parent_.resize(nf);
+    std::iota(m.face_parent_.begin(), m.face_parent_.end(), 0u);
     m.assign_vertex_halfedges();
     m.check_vertex_fans();
     return m;
