@@ -116,6 +116,9 @@ public:
     ///        traverse an edge in the same direction, or a vertex is non-manifold.
     /// Complexity O(V + F) (half-edges bucketed by vertex).
     static Mesh from_soup(const TriangleSoup& soup);
+    /// The same, taking the soup's points instead of copying them; `soup` is left empty (its
+    /// memory freed), for callers that no longer need it.
+    static Mesh from_soup(TriangleSoup&& soup);
 
     // --- sizes ---
     [[nodiscard]] uint32_t num_vertices() const noexcept { return static_cast<uint32_t>(points_.size()); }
@@ -162,6 +165,10 @@ public:
     /// \throw InternalError if the precondition is violated.
     SplitResult split_edge(HalfedgeId h);
 
+    /// Moves the vertex positions out and leaves an empty mesh: for a caller done with the mesh
+    /// that needs its points (the output arrays), without a second copy at the peak.
+    [[nodiscard]] std::vector<Point3> release_points() &&;
+
     // --- topology (O(V + F)) ---
     [[nodiscard]] uint32_t num_referenced_vertices() const;
     [[nodiscard]] uint32_t num_edges() const;
@@ -182,6 +189,8 @@ public:
 
 private:
     // Steps of from_soup().
+    static Mesh build(const std::vector<Triangle>& triangles, std::vector<Point3> points, std::vector<Triangle>* release = nullptr);
+    void reserve_for_split();
     void pair_halfedges(const SoupEdges& edges);
     void assign_vertex_halfedges();
     void check_vertex_fans() const;

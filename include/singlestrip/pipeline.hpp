@@ -75,6 +75,11 @@ struct PipelineOptions {
     /// Tests and fuzzing: Mesh::validate() and a one-component check after Mesh::from_soup,
     /// Mesh::validate() after the strip; O(F) each.
     bool self_check = false;
+    /// Front ends that only write the output (CLI, batch): free each intermediate once used, for
+    /// a lower peak (issue 17). One component without attributes: `input` is left empty (its
+    /// points move into the mesh), and `strip` keeps only its stats (the mesh's points move into
+    /// `arrays`); the cycles are computed before the arrays then.
+    bool release_intermediates = false;
 };
 
 /// Seconds spent per stage. stripify() fills `build` (checks, constraints, corner table) and

@@ -83,11 +83,30 @@ private:
     std::vector<std::vector<uint64_t>> rows_;
 };
 
-Point3 centroid(const StripArrays& a, uint32_t f) {
-    const Triangle& t = a.faces[f];
+/// Output faces (strip positions) and points, read from the output arrays or, without copying
+/// them, from the split mesh and its strip order.
+struct ArraysFaces {
+    const StripArrays& a;
+    [[nodiscard]] Triangle face(uint32_t f) const { return a.faces[f]; }
+    [[nodiscard]] const Point3& point(uint32_t v) const { return a.points[v]; }
+};
+struct MeshFaces {
+    const Mesh& mesh;
+    const std::vector<uint32_t>& order;
+    [[nodiscard]] Triangle face(uint32_t f) const {
+        const auto& cv = mesh.corner_vertices();
+        const uint32_t g = order[f];
+        return {cv[3 * g], cv[3 * g + 1], cv[3 * g + 2]};
+    }
+    [[nodiscard]] const Point3& point(uint32_t v) const { return mesh.position(VertexId(v)); }
+};
+
+template <class Faces>
+Point3 centroid(const Faces& a, uint32_t f) {
+    const Triangle t = a.face(f);
     Point3 c{0, 0, 0};
     for (uint32_t v : t)
-        for (int i = 0; i < 3; ++i) c[i] += a.points[v][i] / 3.0;
+        for (int i = 0; i < 3; ++i) c[i] += a.point(v)[i] / 3.0;
     return c;
 }
 
@@ -96,14 +115,39 @@ double distance(const Point3& p, const Point3& q) {
 }
 
 /// Midpoint of the edge shared by faces f and g; false if they share fewer than two vertices.
-bool shared_midpoint(const StripArrays& a, uint32_t f, uint32_t g, Point3& out) {
+template <class Faces>
+bool shared_midpoint(const Faces& a, uint32_t f, uint32_t g, Point3& out) {
     uint32_t common[2];
     int n = 0;
-    for (uint32_t v : a.faces[f])
-        if (std::find(a.faces[g].begin(), a.faces[g].end(), v) != a.faces[g].end() && n < 2) common[n++] = v;
+    const Triangle tf = a.face(f), tg = a.face(g);
+    for (uint32_t v : tf)
+        if (std::find(tg.begin(), tg.end(), v) != tg.end() && n < 2) common[n++] = v;
     if (n < 2) return false;
-    for (int i = 0; i < 3; ++i) out[i] = 0.5 * (a.points[common[0]][i] + a.points[common[1]][i]);
+    for (int i = 0; i < 3; ++i) out[i] = 0.5 * (a.point(common[0])[i] + a.point(common[1])[i]);
     return true;
+}
+
+template <class Faces>
+std::vector<Point3> polyline_of(const Faces& faces, const std::vector<uint32_t>& cycle) {
+    std::vector<Point3> pts;
+    const size_t n = cycle.size();
+    pts.reserve(2 * n);
+    for (size_t i = 0; i < n; ++i) {
+        pts.push_back(centroid(faces, cycle[i]));
+        if (n < 2) break;
+        Point3 m;
+        if (shared_midpoint(faces, cycle[i], cycle[(i + 1) % n], m)) pts.push_back(m);
+    }
+    return pts;
+}
+
+template <class Faces>
+double length_of(const Faces& faces, const std::vector<uint32_t>& cycle) {
+    if (cycle.size() < 2) return 0.0;
+    const std::vector<Point3> pts = polyline_of(faces, cycle);
+    double len = 0.0;
+    for (size_t i = 0; i < pts.size(); ++i) len += distance(pts[i], pts[(i + 1) % pts.size()]);
+    return len;
 }
 
 /// What the candidate rules read: the mesh, the strip order both ways, and the take times
@@ -394,17 +438,24 @@ Cycles compute_fundamental_cycles(const StripResult& result) {
     // each candidate's class is computed and checked against those kept.
     FaceSearch search(mesh);
     std::vector<Candidate> chosen;
-    const bool nested = !recorded && choose_nested(view, search, fundamental, rank_of(mesh), chosen);
+    bool nested = !recorded && choose_nested(view, search, fundamental, rank_of(mesh), chosen);
+    // The growth builder's own triangles need classes: a dense Z2 basis of (2g)^2 bits and a
+    // class per candidate, O(g) each (g^2 in all). The replay of its order usually needs none,
+    // so the cost follows the cycles' length; classes only when the replay's conditions fail.
+    if (!nested && recorded) {
+        const StripView replayed{mesh, result.order, pos, pos};
+        nested = choose_nested(replayed, search, replay_fundamental_positions(mesh, result.order), rank_of(mesh), chosen);
+    }
     if (!nested) chosen = choose_independent(view, search, fundamental);
 
     Cycles out;
-    const StripArrays arrays = strip_arrays(result);
+    const MeshFaces faces{mesh, result.order};  // not strip_arrays(): a copy of the whole output
     for (const Candidate& c : chosen) {
         if (c.faces.empty()) continue;  // a slot no independent cycle could fill
         std::vector<uint32_t> cycle;
         cycle.reserve(c.faces.size());
         for (uint32_t f : c.faces) cycle.push_back(pos[f]);
-        out.lengths.push_back(cycle_length(arrays, cycle));
+        out.lengths.push_back(length_of(faces, cycle));
         out.cycles.push_back(std::move(cycle));
         out.sources.push_back(c.source);
     }
@@ -412,16 +463,7 @@ Cycles compute_fundamental_cycles(const StripResult& result) {
 }
 
 std::vector<Point3> cycle_polyline(const StripArrays& arrays, const std::vector<uint32_t>& cycle) {
-    std::vector<Point3> pts;
-    const size_t n = cycle.size();
-    pts.reserve(2 * n);
-    for (size_t i = 0; i < n; ++i) {
-        pts.push_back(centroid(arrays, cycle[i]));
-        if (n < 2) break;
-        Point3 m;
-        if (shared_midpoint(arrays, cycle[i], cycle[(i + 1) % n], m)) pts.push_back(m);
-    }
-    return pts;
+    return polyline_of(ArraysFaces{arrays}, cycle);
 }
 
 std::vector<std::vector<Point3>> cycle_polylines(const StripArrays& arrays, const Cycles& cycles) {
@@ -438,19 +480,15 @@ std::vector<std::vector<Point3>> cycle_polylines(const StripArrays& arrays, cons
 }
 
 double cycle_length(const StripArrays& arrays, const std::vector<uint32_t>& cycle) {
-    if (cycle.size() < 2) return 0.0;
-    const std::vector<Point3> pts = cycle_polyline(arrays, cycle);
-    double len = 0.0;
-    for (size_t i = 0; i < pts.size(); ++i) len += distance(pts[i], pts[(i + 1) % pts.size()]);
-    return len;
+    return length_of(ArraysFaces{arrays}, cycle);
 }
 
 Cycles tree_cotree_cycles(const StripResult& result) {
     Cycles out;
     out.cycles = tree_cotree_generators(result.mesh, result.order);
-    const StripArrays arrays = strip_arrays(result);
+    const MeshFaces faces{result.mesh, result.order};
     out.lengths.reserve(out.cycles.size());
-    for (const auto& c : out.cycles) out.lengths.push_back(cycle_length(arrays, c));
+    for (const auto& c : out.cycles) out.lengths.push_back(length_of(faces, c));
     return out;
 }
 

@@ -9,7 +9,7 @@
 
 #include <cstdint>
 #include <initializer_list>
-#include <optional>
+#include <utility>
 #include <vector>
 
 #include "singlestrip/mesh.hpp"
@@ -41,8 +41,14 @@ private:
     uint32_t num_pins_ = 0;
     bool reversed_ = false;  ///< only a target: the walk starts there and is reversed
     StripStats stats_;
-    std::vector<Triangle> input_faces_;  ///< the input, to rebuild it if the split budget runs out
-    std::optional<Mesh> pre_merge_;      ///< the mesh before the joins, kept when paths remain
+    /// (corner, its input vertex) for each input face's corner a split overwrote, oldest first:
+    /// with the current corners it gives back the input (input_mesh()) for 8 bytes a split
+    /// instead of a 12-byte copy of every face.
+    std::vector<std::pair<uint32_t, uint32_t>> overwritten_;
+    std::vector<uint32_t> split_log_;  ///< the half-edge of every split, in order
+    /// Paths remain: the mesh before the joins (its first pre_merge_splits_ splits) is a fallback
+    /// candidate, replayed from the input then instead of kept as a copy (36 bytes a face).
+    bool pre_merge_ = false;
     uint32_t pre_merge_splits_ = 0;
     bool chain_splits_ = false;  ///< split_along_chains() split something
     // Augmenting search, per face: the outer face it was reached from and the two edges used.
@@ -94,6 +100,7 @@ private:
     std::vector<uint32_t> bl_touched_, bl_queue_, bl_merge_;
     uint32_t bl_search_ = 0, bl_mark_ = 0;
     void settle_leftovers();
+    void release_repair_scratch();
     void check_matching() const;
     void repair_short(std::vector<uint32_t>& short_faces);
     bool split_beside(uint32_t u);
@@ -139,6 +146,7 @@ private:
     StripResult as_fallback(StripResult r) const;
     StripResult fallback();
     Mesh input_mesh() const;
+    Mesh pre_merge_mesh(const Mesh& original) const;
 };
 
 }  // namespace singlestrip::matching

@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "matching_builder.hpp"
@@ -249,7 +250,7 @@ void MatchingBuilder::settle_leftovers() {
     collect();
     repair_short(short_faces);
     if (!short_faces.empty()) {  // the growth builder may have to finish (fallback())
-        pre_merge_ = mesh_;
+        pre_merge_ = true;
         pre_merge_splits_ = stats_.splits;
     }
     chain_splits_ = !short_faces.empty() && split_along_chains(short_faces);
@@ -286,7 +287,18 @@ void MatchingBuilder::settle_leftovers() {
                 --quota_[f];
             }
     stats_.unmatched = static_cast<uint32_t>(short_faces.size());
-    if (short_faces.empty() && !chain_splits_) pre_merge_.reset();  // loops only: no fallback ahead
+    if (short_faces.empty() && !chain_splits_) pre_merge_ = false;  // loops only: no fallback ahead
+    release_repair_scratch();
+}
+
+// The searches' per-face arrays (up to 28 bytes per face) are not used after the matching: free
+// them before the joins build theirs (issue 17's peak memory).
+void MatchingBuilder::release_repair_scratch() {
+    auto release = [](auto& v) { std::remove_reference_t<decltype(v)>().swap(v); };
+    release(aug_prev_), release(aug_matched_), release(aug_unmatched_), release(aug_queue_);
+    release(bl_stamp_), release(bl_seen_), release(bl_base_), release(bl_parent_), release(bl_label_);
+    release(bl_touched_), release(bl_queue_), release(bl_merge_);
+    release(ball_local_), release(ball_whole_);
 }
 
 // The matching's invariant: a face has exactly its wanted matched edges less its quota, all

@@ -19,6 +19,7 @@
 #include <string>
 #include <utility>
 
+#include "core/gentle_growth.hpp"
 #include "singlestrip/errors.hpp"
 #include "strip_controls.hpp"
 
@@ -196,18 +197,23 @@ private:
 };
 
 void Builder::grow_arrays() {
-    const uint32_t nf = mesh_.num_faces();
-    striped_.resize(nf, 0);
-    region_.resize(nf, kNoRegion);
-    next_.resize(nf, kNone);
-    prev_.resize(nf, kNone);
-    stamp_.resize(nf, 0);
-    fundamental_.resize(nf, 0);
-    time_.resize(nf, kNone);
-    blocked_.resize(mesh_.num_halfedges(), 0);
-    vstamp_.resize(mesh_.num_vertices(), 0);
-    striped_at_.resize(mesh_.num_vertices(), 0);
-    rim_.resize(mesh_.num_vertices(), 0);
+    // Gently: splits add a few percent, and doubling 11 arrays would add up to 34 bytes a face.
+    auto fit = [](auto& v, uint32_t n, auto value) {
+        reserve_gently(v, n);
+        v.resize(n, value);
+    };
+    const uint32_t nf = mesh_.num_faces(), nh = mesh_.num_halfedges(), nv = mesh_.num_vertices();
+    fit(striped_, nf, 0);
+    fit(region_, nf, kNoRegion);
+    fit(next_, nf, kNone);
+    fit(prev_, nf, kNone);
+    fit(stamp_, nf, 0);
+    fit(fundamental_, nf, 0);
+    fit(time_, nf, kNone);
+    fit(blocked_, nh, 0);
+    fit(vstamp_, nv, 0);
+    fit(striped_at_, nv, 0);
+    fit(rim_, nv, 0);
 }
 
 void Builder::count_striped(uint32_t f, int delta) {

@@ -15,6 +15,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/gentle_growth.hpp"
 #include "matching_builder.hpp"
 #include "singlestrip/errors.hpp"
 #include "singlestrip/strip.hpp"
@@ -56,18 +57,25 @@ void MatchingBuilder::choose_pins() {
 SplitResult MatchingBuilder::split(uint32_t h) {
     const uint32_t t = mesh_.twin(HalfedgeId(h)).idx(), hn = Mesh::next(HalfedgeId(h)).idx(), tn = Mesh::next(HalfedgeId(t)).idx();
     const uint32_t pin_vertex[2] = {opt_.source ? opt_.source->idx() : kNone, opt_.target ? opt_.target->idx() : kNone};
+    for (const uint32_t c : {hn, tn})  // the two corners split_edge() moves to the midpoint
+        if (c < 3 * mesh_.num_input_faces()) overwritten_.emplace_back(c, mesh_.corner_vertices()[c]);
+    split_log_.push_back(h);
     const SplitResult sr = mesh_.split_edge(HalfedgeId(h));
     if (opt_.validate_each_split) mesh_.validate();
     ++stats_.splits;
     const uint32_t fb0 = 3 * sr.f_b.idx(), ga0 = 3 * sr.g_a.idx();
     for (auto* a : {&blocked_, &matched_, &used_}) {
+        reserve_gently(*a, mesh_.num_halfedges());
         a->resize(mesh_.num_halfedges(), 0);
         (*a)[fb0 + 1] = (*a)[hn];
         (*a)[ga0 + 1] = (*a)[tn];
         for (uint32_t x : {h, hn, t, tn, fb0, fb0 + 2, ga0, ga0 + 2}) (*a)[x] = 0;
     }
+    reserve_gently(vlink_, mesh_.num_faces());
+    reserve_gently(quota_, mesh_.num_faces());
     vlink_.resize(mesh_.num_faces(), 0);
     quota_.resize(mesh_.num_faces(), 0);
+    if (!sid_.empty()) reserve_gently(sid_, mesh_.num_faces());
     if (!sid_.empty()) sid_.resize(mesh_.num_faces(), sid_[sr.f_a.idx()]), sid_[sr.g_a.idx()] = sid_[sr.g_b.idx()];
     for (uint32_t i = 0; i < num_pins_; ++i) {
         const uint32_t v = (i == 0 && !reversed_) ? pin_vertex[0] : pin_vertex[1];
@@ -362,6 +370,14 @@ StripResult MatchingBuilder::as_fallback(StripResult r) const {
     return r;
 }
 
+// The mesh before the joins: split numbering is deterministic, so replaying the logged splits on
+// the input rebuilds it.
+Mesh MatchingBuilder::pre_merge_mesh(const Mesh& original) const {
+    Mesh pre(original);
+    for (uint32_t i = 0; i < pre_merge_splits_; ++i) pre.split_edge(HalfedgeId(split_log_[i]));
+    return pre;
+}
+
 // Not one strip (paths whose ends never touch): the growth builder, which always ends in one
 // strip, finishes on the mesh as split so far.
 StripResult MatchingBuilder::fallback() {
@@ -370,7 +386,7 @@ StripResult MatchingBuilder::fallback() {
     Mesh original = input_mesh();  // before mesh_ is handed over
     StripResult r;
     keep_better(r, grow(std::move(mesh_), stats_.splits));
-    if (pre_merge_) keep_better(r, grow(std::move(*pre_merge_), pre_merge_splits_));  // without the joins' splits
+    if (pre_merge_) keep_better(r, grow(pre_merge_mesh(original), pre_merge_splits_));  // without the joins' splits
     keep_better(r, grow(Mesh(original), 0));
     if (r.order.empty()) {  // the growth builder's own case, with its own errors
         StripOptions o = opt_;
@@ -390,8 +406,8 @@ StripResult MatchingBuilder::finish_or_grow(std::vector<uint32_t> order) {
     Mesh original = input_mesh();
     StripResult r = finish(std::move(order));
     StripResult g;
+    if (chain_splits_ && pre_merge_) keep_better(g, grow(pre_merge_mesh(original), pre_merge_splits_));
     keep_better(g, grow(std::move(original), 0));
-    if (chain_splits_ && pre_merge_) keep_better(g, grow(std::move(*pre_merge_), pre_merge_splits_));
     if (g.order.empty()) return r;
     return cost(g) < cost(r) ? as_fallback(std::move(g)) : r;
 }
@@ -400,17 +416,17 @@ StripResult MatchingBuilder::finish_or_grow(std::vector<uint32_t> order) {
 Mesh MatchingBuilder::input_mesh() const {
     TriangleSoup soup;
     soup.points.assign(mesh_.points().begin(), mesh_.points().begin() + mesh_.num_input_vertices());
-    soup.triangles = input_faces_;
-    return Mesh::from_soup(soup);
+    const auto& cv = mesh_.corner_vertices();
+    soup.triangles.resize(mesh_.num_input_faces());
+    for (uint32_t f = 0; f < soup.triangles.size(); ++f) soup.triangles[f] = {cv[3 * f], cv[3 * f + 1], cv[3 * f + 2]};
+    for (auto it = overwritten_.rbegin(); it != overwritten_.rend(); ++it) soup.triangles[it->first / 3][it->first % 3] = it->second;
+    return Mesh::from_soup(std::move(soup));
 }
 
 StripResult MatchingBuilder::run() {
     const uint32_t nf = mesh_.num_faces();
     check_strip_request(mesh_, opt_);
     blocked_ = constraint_halfedges(mesh_, opt_);
-    input_faces_.resize(nf);
-    for (uint32_t f = 0; f < nf; ++f)
-        for (uint32_t k = 0; k < 3; ++k) input_faces_[f][k] = mesh_.corner_vertices()[3 * f + k];
     stats_.input_triangles = nf;
     stats_.boundary_loops = mesh_.num_boundary_loops();
     stats_.genus = mesh_.genus();

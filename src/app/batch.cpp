@@ -42,6 +42,7 @@ std::string stem_of(const std::string& input) {
 PipelineOptions pipeline_options(const BatchOptions& o, const std::string& input) {
     PipelineOptions p = o.pipeline;
     p.name = input;
+    p.release_intermediates = true;  // only the arrays, indices, cycles and stats are written
     return p;
 }
 

@@ -5,33 +5,51 @@
 #include <numeric>
 #include <string>
 
+#include "gentle_growth.hpp"
 #include "singlestrip/errors.hpp"
 #include "soup_edges.hpp"
 
 namespace singlestrip {
 
 Mesh Mesh::from_soup(const TriangleSoup& soup) {
+    return build(soup.triangles, soup.points);
+}
+
+Mesh Mesh::from_soup(TriangleSoup&& soup) {
+    // The caller gave the soup up: free it as soon as it is copied (assigning {} would keep
+    // the capacity); build() frees the triangles once the corners hold them.
+    soup.source_polygon = std::vector<uint32_t>();
+    Mesh m = build(soup.triangles, std::move(soup.points), &soup.triangles);
+    soup.points = std::vector<Point3>();
+    return m;
+}
+
+// The pairing's scratch (SoupEdges, 28 bytes a face while sorting) comes before the corner
+// table's arrays, and `release` (the soup's triangles) goes once the corners are filled: that
+// keeps the peak of a large mesh at about its corner table plus the soup.
+Mesh Mesh::build(const std::vector<Triangle>& triangles, std::vector<Point3> points, std::vector<Triangle>* release) {
     Mesh m;
-    const size_t nf = soup.triangles.size();
+    const size_t nf = triangles.size();
     if (nf >= kNone / 3) throw InputError("mesh has too many faces (" + std::to_string(nf) + ")");
-    m.points_ = soup.points;
-    m.num_input_vertices_ = static_cast<uint32_t>(soup.points.size());
+    m.points_ = std::move(points);
+    m.num_input_vertices_ = static_cast<uint32_t>(m.points_.size());
     m.num_input_faces_ = static_cast<uint32_t>(nf);
-    m.corner_vertex_.resize(3 * nf);
-    m.twin_.assign(3 * nf, kNone);
-    m.face_parent_.resize(nf);
-    std::iota(m.face_parent_.begin(), m.face_parent_.end(), 0u);
     for (size_t f = 0; f < nf; ++f) {
-        const Triangle& t = soup.triangles[f];
-        for (int k = 0; k < 3; ++k) {
-            if (t[k] >= soup.points.size())
+        const Triangle& t = triangles[f];
+        for (int k = 0; k < 3; ++k)
+            if (t[k] >= m.points_.size())
                 throw InputError("face " + std::to_string(f) + " references vertex " + std::to_string(t[k]) + " but there are only " +
-                                 std::to_string(soup.points.size()) + " vertices");
-            m.corner_vertex_[3 * f + k] = t[k];
-        }
+                                 std::to_string(m.points_.size()) + " vertices");
         if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) throw InputError("face " + std::to_string(f) + " repeats a vertex");
     }
-    m.pair_halfedges(SoupEdges(soup.triangles, soup.points.size()));
+    m.twin_.assign(3 * nf, kNone);
+    m.pair_halfedges(SoupEdges(triangles, m.points_.size()));
+    m.corner_vertex_.resize(3 * nf);
+    for (size_t f = 0; f < nf; ++f)
+        for (int k = 0; k < 3; ++k) m.corner_vertex_[3 * f + k] = triangles[f][k];
+    if (release) *release = std::vector<Triangle>();
+    m.face_parent_.resize(nf);
+    std::iota(m.face_parent_.begin(), m.face_parent_.end(), 0u);
     m.assign_vertex_halfedges();
     m.check_vertex_fans();
     return m;
@@ -97,6 +115,7 @@ HalfedgeId Mesh::shared_halfedge(FaceId f, FaceId g) const noexcept {
 SplitResult Mesh::split_edge(HalfedgeId he) {
     if (he.idx() >= twin_.size() || is_boundary(he))
         throw InternalError("split_edge: half-edge " + std::to_string(he.idx()) + " is not an interior edge");
+    reserve_for_split();  // first: references into points_ below must stay valid
     // The corner table's own arrays, indexed directly.
     const uint32_t h = he.idx(), t = twin_[h];
     const uint32_t f = h / 3, g = t / 3;
@@ -139,6 +158,20 @@ SplitResult Mesh::split_edge(HalfedgeId he) {
     if (vertex_halfedge_[a] == tn) vertex_halfedge_[a] = ga0 + 1;
     vertex_halfedge_[mid] = fb0 + 0;
     return SplitResult{VertexId(mid), FaceId(f), FaceId(fb), FaceId(ga), FaceId(g)};
+}
+
+void Mesh::reserve_for_split() {
+    reserve_gently(points_, points_.size() + 1);
+    reserve_gently(vertex_halfedge_, vertex_halfedge_.size() + 1);
+    reserve_gently(corner_vertex_, corner_vertex_.size() + 6);
+    reserve_gently(twin_, twin_.size() + 6);
+    reserve_gently(face_parent_, face_parent_.size() + 2);
+}
+
+std::vector<Point3> Mesh::release_points() && {
+    std::vector<Point3> p = std::move(points_);
+    *this = Mesh();
+    return p;
 }
 
 uint32_t Mesh::num_referenced_vertices() const {

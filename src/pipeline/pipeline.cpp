@@ -53,10 +53,10 @@ void check_constraint_edges(const TriangleSoup& soup, const std::vector<Constrai
 }
 
 // prepare_soup() promises a soup Mesh::from_soup() accepts: a refusal here is a bug.
-Mesh build_mesh(const TriangleSoup& soup, bool self_check) {
+Mesh build_mesh(TriangleSoup& soup, bool self_check, bool take_soup) {
     Mesh mesh;
     try {
-        mesh = Mesh::from_soup(soup);
+        mesh = take_soup ? Mesh::from_soup(std::move(soup)) : Mesh::from_soup(soup);
     } catch (const InputError& e) {
         throw InternalError(std::string("prepare_soup accepted a soup that Mesh::from_soup rejects: ") + e.what());
     }
@@ -142,22 +142,46 @@ void map_parents(PipelineResult& r) {
     for (uint32_t& p : r.arrays.parent) p = r.face_origin[p];
 }
 
+void compute_cycles(PipelineResult& r, PipelineStage* stage) {
+    if (!r.options.cycles) return;
+    enter(stage, PipelineStage::Cycles);
+    r.cycles = compute_fundamental_cycles(r.strip);
+}
+
+/// strip_arrays() without a second copy of the points: the mesh gives its points up, and the
+/// rest of r.strip (mesh, order, times) is freed; only the stats stay.
+StripArrays release_strip_arrays(StripResult& s) {
+    StripArrays out;
+    out.faces.reserve(s.order.size());
+    out.parent.reserve(s.order.size());
+    const auto& cv = s.mesh.corner_vertices();
+    for (const uint32_t f : s.order) {
+        out.faces.push_back({cv[3 * f], cv[3 * f + 1], cv[3 * f + 2]});
+        out.parent.push_back(s.mesh.parent(FaceId(f)).idx());
+    }
+    out.points = std::move(s.mesh).release_points();
+    StripResult kept;
+    kept.stats = s.stats;
+    s = std::move(kept);
+    return out;
+}
+
 /// Today's path: one component, one strip.
 void strip_one(PipelineResult& r, bool self_check, PipelineStage* stage) {
+    // Attributes are blended from r.input after the strip: then it has to stay.
+    const bool lean = r.options.release_intermediates && r.input.attributes.empty();
     enter(stage, PipelineStage::Mesh);
-    Mesh mesh = build_mesh(r.input, self_check);
+    Mesh mesh = build_mesh(r.input, self_check, lean);
     enter(stage, PipelineStage::Strip);
     r.strip = build_strip(std::move(mesh), r.options.strip);
     if (self_check) r.strip.mesh.validate();
+    if (lean) compute_cycles(r, stage);
     enter(stage, PipelineStage::Encode);
-    r.arrays = strip_arrays(r.strip);
+    r.arrays = lean ? release_strip_arrays(r.strip) : strip_arrays(r.strip);
     r.indices = encode_triangle_strip(r.arrays.faces);
     const StripStats& st = r.strip.stats;
     r.components.push_back({st.input_triangles, st.output_triangles, st.splits, st.genus, st.boundary_loops, 0, r.indices.size()});
-    if (r.options.cycles) {
-        enter(stage, PipelineStage::Cycles);
-        r.cycles = compute_fundamental_cycles(r.strip);
-    }
+    if (!lean) compute_cycles(r, stage);
 }
 
 }  // namespace
@@ -194,13 +218,15 @@ PipelineResult stripify(TriangleSoup soup, const PipelineOptions& options, Pipel
         check_constraint_edges(r.input, constraints, options);
     }
     uint32_t count = 0;
-    const std::vector<uint32_t> comp = face_components(r.input, &count);
+    std::vector<uint32_t> comp = face_components(r.input, &count);
     warn_unwelded(r, count);
     r.seconds.build = clock.lap();
-    if (count <= 1)
+    if (count <= 1) {
+        comp = std::vector<uint32_t>();  // not needed for one component: free it before the strip
         strip_one(r, options.self_check, stage);
-    else
+    } else {
         detail::strip_components(r, comp, count, stage);
+    }
     carry_attributes(r);
     map_parents(r);
     r.seconds.strip = clock.lap();
