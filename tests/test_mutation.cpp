@@ -59,6 +59,28 @@ void operator delete(void* p, size_t) noexcept {
 void operator delete[](void* p, size_t) noexcept {
     std::free(p);
 }
+// The nothrow forms too (std::stable_sort's buffer): else the sanitizer's operator new pairs with
+// the free() above (alloc-dealloc mismatch).
+void* operator new(size_t n, const std::nothrow_t&) noexcept {
+    try {
+        return probe_alloc(n);
+    } catch (...) {
+        return nullptr;
+    }
+}
+void* operator new[](size_t n, const std::nothrow_t&) noexcept {
+    try {
+        return probe_alloc(n);
+    } catch (...) {
+        return nullptr;
+    }
+}
+void operator delete(void* p, const std::nothrow_t&) noexcept {
+    std::free(p);
+}
+void operator delete[](void* p, const std::nothrow_t&) noexcept {
+    std::free(p);
+}
 
 using namespace singlestrip;
 namespace fs = std::filesystem;
