@@ -1,5 +1,5 @@
 // singlestrip — internal: request checks, constraint edges and vertex queries shared by the two
-// strip engines (src/algo/strip.cpp, src/algo/strip_matching.cpp).
+// strip engines (src/algo/strip.cpp and growth_*.cpp, src/algo/strip_matching.cpp).
 #pragma once
 
 #include <cstdint>

@@ -1,0 +1,140 @@
+// singlestrip — the growth builder's classification of the next face as safe, bridge or
+// fundamental: the O(1) cavity test first, a bidirectional search only when it cannot tell.
+#include <algorithm>
+#include <cstdint>
+#include <string>
+
+#include "growth_builder.hpp"
+#include "singlestrip/errors.hpp"
+
+namespace singlestrip::growth {
+
+// Local cavity test (paper Fig. 6): a and b (N's open neighbours across ha and hb) stay connected
+// without N if the faces around the vertex V shared by ha and hb lead from a to b, away from N,
+// through open faces of r and passable edges. That path is every face and edge around V but N
+// and its two edges, so it exists exactly when V is not on the rim (no boundary or constraint
+// edge at V) and no face around V is striped: the unstriped faces around V are then connected
+// to N, hence in N's region (a region is a connected piece of the unstriped faces). O(1), any
+// valence. (A walk around V cost O(valence) per test: quadratic on a cone's apex; a walk capped at
+// 4096 steps answered "not connected" wrongly and a closed cone failed with "fundamental
+// triangle in a region without cycles".)
+bool Builder::fan_connects(uint32_t n, uint32_t ha, uint32_t hb, uint32_t r) const {
+    const uint32_t v = from_of(ha) == to_of(hb) ? from_of(ha) : to_of(ha);
+    // a shares both its edges at V with N: N closes the fan, the path would go through N.
+    const bool connects = across(ha) != across(hb) && !rim_[v] && striped_at_[v] == 0;
+    if (opt_.validate_each_split && connects != fan_connects_walk(n, ha, hb, r))
+        throw InternalError("strip builder: cavity test disagrees with the walk around vertex " + std::to_string(v));
+    return connects;
+}
+
+// The same test by walking around V (O(valence)); a cross-check in tests (validate_each_split).
+bool Builder::fan_connects_walk(uint32_t n, uint32_t ha, uint32_t hb, uint32_t r) const {
+    const uint32_t v = from_of(ha) == to_of(hb) ? from_of(ha) : to_of(ha);
+    const uint32_t b = across(hb);
+    uint32_t g = twin_of(ha);  // in face a, incident to v
+    for (uint32_t guard = 0; guard <= mesh_.num_halfedges(); ++guard) {
+        const uint32_t other = from_of(g) == v ? prev_of(g) : next_of(g);
+        if (!passable(other)) return false;
+        g = twin_of(other);
+        const uint32_t f = face_of(g);
+        if (f == b) return true;
+        if (f == n || !in_region(f, r)) return false;
+    }
+    return false;
+}
+
+// Alternating search from a and from b through open faces of r, never entering n.
+// Met if they meet (connected), else the side that ran out first (IslandOfA or IslandOfB); that
+// side's faces are then in side_[0] or side_[1]. Cost O(size of the smaller island) when they are separated.
+Builder::SearchOutcome Builder::bidirectional_search(uint32_t n, uint32_t a, uint32_t b, uint32_t r, size_t budget) {
+    stamp_base_ += 2;
+    if (stamp_base_ >= 0xfffffff0u) {
+        std::fill(stamp_.begin(), stamp_.end(), 0);
+        stamp_base_ = 2;
+    }
+    const uint32_t mark[2] = {stamp_base_, stamp_base_ + 1};
+    size_t popped = 0;
+    for (int s = 0; s < 2; ++s) {
+        side_[s].clear();
+        stack_[s].clear();
+    }
+    side_[0].push_back(a);
+    side_[1].push_back(b);
+    stack_[0].push_back(a);
+    stack_[1].push_back(b);
+    stamp_[a] = mark[0];
+    stamp_[b] = mark[1];
+    stamp_[n] = mark[0];  // never enter n (both sides treat it as foreign but not as a meeting)
+    for (;;) {
+        if (popped > budget) {
+            stamp_[n] = 0;
+            return SearchOutcome::OverBudget;
+        }
+        for (int s = 0; s < 2; ++s) {
+            if (stack_[s].empty()) {
+                stamp_[n] = 0;
+                return s == 0 ? SearchOutcome::IslandOfA : SearchOutcome::IslandOfB;
+            }
+            const uint32_t f = stack_[s].back();
+            stack_[s].pop_back();
+            ++popped;
+            for (uint32_t k = 0; k < 3; ++k) {
+                const uint32_t g = open_neighbor(he(f, k), r);
+                if (g == kNone || g == n) continue;
+                if (stamp_[g] == mark[s]) continue;
+                if (stamp_[g] == mark[1 - s]) {
+                    stamp_[n] = 0;
+                    return SearchOutcome::Met;
+                }
+                stamp_[g] = mark[s];
+                side_[s].push_back(g);
+                stack_[s].push_back(g);
+            }
+        }
+    }
+}
+
+// Cheap part of the classification: open neighbours, then the local cavity test. In a region
+// without cycles (beta 0, a disk) a failed cavity test proves a bridge without any search.
+Builder::Classification Builder::classify_local(uint32_t n, uint32_t from, uint32_t r) const {
+    Classification c;
+    for (uint32_t k = 0; k < 3; ++k) {
+        const uint32_t h = he(n, k);
+        const uint32_t g = open_neighbor(h, r);
+        if (g == kNone || g == from) continue;
+        if (c.a == kNone) {
+            c.a = g;
+            c.ha = h;
+        } else {
+            c.b = g;
+            c.hb = h;
+        }
+    }
+    if (c.b == kNone) return c;  // at most one open neighbour: removing n keeps R connected
+    if (fan_connects(n, c.ha, c.hb, r)) return c;
+    c.kind = region_beta_[r] <= 0 ? Kind::Bridge : Kind::Unknown;
+    return c;
+}
+
+// Expensive part: the bidirectional search decides Unknown, and finds the smaller island of a
+// bridge (left in side_[c.small_side]); call it right before taking a bridge. With a budget
+// (faces visited) it may return false: still Unknown.
+bool Builder::resolve(Classification& c, uint32_t n, uint32_t r, size_t budget) {
+    if (c.kind == Kind::Safe || (c.kind == Kind::Bridge && c.small_side != kNone && searched_ == n)) return true;
+    const SearchOutcome s = bidirectional_search(n, c.a, c.b, r, budget);
+    searched_ = n;
+    if (s == SearchOutcome::OverBudget) return false;
+    if (s == SearchOutcome::Met) {
+        // A split candidate that is not a bridge (§3.1). Impossible in a disk.
+        if (region_beta_[r] <= 0)
+            throw InternalError("strip builder: fundamental triangle in a region without cycles (topology tracking broken)");
+        c.kind = Kind::Safe;
+        c.fundamental = true;
+        return true;
+    }
+    c.kind = Kind::Bridge;
+    c.small_side = s == SearchOutcome::IslandOfA ? 0 : 1;
+    return true;
+}
+
+}  // namespace singlestrip::growth

@@ -1,0 +1,148 @@
+// singlestrip — the growth builder's bookkeeping: per-face and per-half-edge arrays, region
+// labels and Betti numbers, the doubly linked strip, chi of a face set, and midpoint splits that
+// keep all of it in step (growth_builder.hpp).
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/gentle_growth.hpp"
+#include "growth_builder.hpp"
+#include "singlestrip/errors.hpp"
+
+namespace singlestrip::growth {
+
+void Builder::grow_arrays() {
+    // Gently: splits add a few percent, and doubling 11 arrays would add up to 34 bytes a face.
+    auto fit = [](auto& v, uint32_t n, auto value) {
+        reserve_gently(v, n);
+        v.resize(n, value);
+    };
+    const uint32_t nf = mesh_.num_faces(), nh = mesh_.num_halfedges(), nv = mesh_.num_vertices();
+    fit(striped_, nf, 0);
+    fit(region_, nf, kNoRegion);
+    fit(next_, nf, kNone);
+    fit(prev_, nf, kNone);
+    fit(stamp_, nf, 0);
+    fit(fundamental_, nf, 0);
+    fit(time_, nf, kNone);
+    fit(blocked_, nh, 0);
+    fit(vstamp_, nv, 0);
+    fit(striped_at_, nv, 0);
+    fit(rim_, nv, 0);
+}
+
+void Builder::count_striped(uint32_t f, int delta) {
+    for (uint32_t k = 0; k < 3; ++k) striped_at_[mesh_.corner_vertices()[he(f, k)]] += static_cast<uint32_t>(delta);
+}
+
+// chi of a set of open faces of region r: F - (passable edges inside) + (vertices whose whole
+// fan lies in the region through passable edges). Derivation in docs/algorithm.md. O(|faces|).
+long long Builder::chi_of(const std::vector<uint32_t>& faces, uint32_t r) {
+    ++vstamp_base_;
+    long long inner_halfedges = 0, interior_vertices = 0;
+    for (const uint32_t f : faces) {
+        for (uint32_t k = 0; k < 3; ++k) {
+            const uint32_t h = he(f, k);
+            inner_halfedges += open_neighbor(h, r) != kNone;
+            const uint32_t v = from_of(h);
+            if (vstamp_[v] == vstamp_base_) continue;
+            vstamp_[v] = vstamp_base_;
+            // Interior: rotating around v never leaves the region nor crosses a blocked edge.
+            uint32_t g = h;
+            bool interior = true;
+            do {
+                const uint32_t e = prev_of(g);
+                if (!passable(e) || !in_region(face_of(g), r)) {
+                    interior = false;
+                    break;
+                }
+                g = twin_of(e);
+            } while (g != h);
+            interior_vertices += interior;
+        }
+    }
+    return static_cast<long long>(faces.size()) - inner_halfedges / 2 + interior_vertices;
+}
+
+uint32_t Builder::new_region(uint32_t size) {
+    region_size_.push_back(size);
+    region_beta_.push_back(0);
+    deferred_of_region_.push_back(kNone);
+    return static_cast<uint32_t>(region_size_.size() - 1);
+}
+
+void Builder::insert_after(uint32_t cursor, uint32_t f) {
+    if (cursor == kNone) {
+        next_[f] = head_;
+        prev_[f] = kNone;
+        if (head_ != kNone) prev_[head_] = f;
+        head_ = f;
+        if (tail_ == kNone) tail_ = f;
+        return;
+    }
+    const uint32_t nx = next_[cursor];
+    next_[cursor] = f;
+    prev_[f] = cursor;
+    next_[f] = nx;
+    if (nx != kNone)
+        prev_[nx] = f;
+    else
+        tail_ = f;
+}
+
+void Builder::take(uint32_t cursor, uint32_t f) {
+    if (striped_[f]) throw InternalError("strip builder: face " + std::to_string(f) + " taken twice");
+    striped_[f] = 1;
+    count_striped(f, +1);
+    time_[f] = clock_++;
+    scan_credit_ += kScanCreditPerFace;
+    --region_size_[region_[f]];
+    insert_after(cursor, f);
+}
+
+void Builder::note_fundamental(uint32_t f, uint32_t r) {
+    fundamental_[f] = 1;
+    ++stats_.fundamental_triangles;
+    --region_beta_[r];
+}
+
+void Builder::defer(uint32_t region, uint32_t anchor) {
+    deferred_of_region_[region] = static_cast<uint32_t>(deferred_.size());
+    deferred_.push_back({region, anchor, false});
+    ++stats_.deferred_regions;
+}
+
+// Splits the edge of h at its midpoint, keeping the per-face and per-half-edge state in step.
+Builder::Children Builder::split_at(uint32_t h) {
+    // Constraint flags of the two half-edges that split_edge moves into new faces.
+    const uint32_t moved_f = next_of(h), moved_g = next_of(twin_of(h));
+    const uint8_t blocked_f = blocked_[moved_f], blocked_g = blocked_[moved_g];
+    // The children of a striped face are striped (the host's in absorb()).
+    const uint8_t striped_f = striped_[face_of(h)], striped_g = striped_[face_of(twin_of(h))];
+    if (striped_f) count_striped(face_of(h), -1);
+    if (striped_g) count_striped(face_of(twin_of(h)), -1);
+    const SplitResult r = mesh_.split_edge(HalfedgeId(h));
+    const Children s{r.f_a.idx(), r.f_b.idx(), r.g_a.idx(), r.g_b.idx()};
+    ++stats_.splits;
+    check_split_budget();
+    grow_arrays();
+    striped_[s.f_b] = striped_f;
+    striped_[s.g_a] = striped_g;
+    for (const uint32_t f : {s.f_a, s.f_b, s.g_a, s.g_b})
+        if (striped_[f]) count_striped(f, +1);
+    blocked_[moved_f] = 0;
+    blocked_[moved_g] = 0;
+    blocked_[he(s.f_b, 1)] = blocked_f;
+    blocked_[he(s.g_a, 1)] = blocked_g;
+    if (opt_.validate_each_split) mesh_.validate();
+    return s;
+}
+
+void Builder::check_split_budget() const {
+    // docs/algorithm.md: splits < input faces (+1 for the target pre-split). Exceeding it means a
+    // broken invariant, never a long loop.
+    if (stats_.splits > mesh_.num_input_faces() + 1)
+        throw InternalError("strip builder: split budget exceeded (" + std::to_string(stats_.splits) + " splits)");
+}
+
+}  // namespace singlestrip::growth
