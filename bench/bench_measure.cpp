@@ -1,0 +1,457 @@
+// singlestrip_bench — the measurements, each run in a forked child: one engine's repetitions
+// (read -> prepare -> build -> encode -> write, peak memory, verified), the meshoptimizer
+// reference and swap floor, and random constraint polylines on both engines.
+// <out>/awkward.dat (gnuplot). Progress goes to stderr only when it is a terminal.
+#include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <sys/time.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <iostream>
+#include <map>
+#include <numeric>
+#include <optional>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <meshoptimizer.h>
+
+#include "bench_run.hpp"
+#include "families.hpp"
+#include "fixtures.hpp"
+#include "read_bench.hpp"
+#include "scaling.hpp"
+#include "singlestrip/encode.hpp"
+#include "singlestrip/errors.hpp"
+#include "singlestrip/io.hpp"
+#include "singlestrip/mesh.hpp"
+#include "singlestrip/strip.hpp"
+#include "singlestrip/validate.hpp"
+#include "singlestrip/verify.hpp"
+
+namespace fs = std::filesystem;
+
+namespace singlestrip_bench {
+
+double median(std::vector<double> v) {
+    std::erase_if(v, [](double x) { return std::isnan(x); });
+    if (v.empty()) return NAN;
+    std::sort(v.begin(), v.end());
+    const size_t m = v.size() / 2;
+    return v.size() % 2 ? v[m] : (v[m - 1] + v[m]) / 2;
+}
+
+namespace {
+
+/// Reads and prepares (orients) `path` into `soup`; an InputError is recorded in `r` (status 1)
+/// and gives false.
+template <class T>
+bool read_prepared(const std::string& path, ss::TriangleSoup& soup, T& r) {
+    try {
+        soup = ss::prepare_soup(ss::read_mesh_file(path), ss::PrepareOptions{true}, path);
+        return true;
+    } catch (const ss::InputError& e) {
+        r.status = 1;
+        set_message(r, e.what());
+        return false;
+    }
+}
+
+/// Strips joined by degenerate triangles in a GL strip. A swap inside a strip (a b a) makes ONE
+/// degenerate triangle; a join (... a b b c c d ...) makes a run of two or more, so only runs of
+/// length >= 2 count as joins.
+uint64_t count_degenerate_strips(const std::vector<unsigned>& s) {
+    if (s.size() < 3) return s.empty() ? 0 : 1;
+    uint64_t joins = 0, run = 0;
+    for (size_t i = 0; i + 2 < s.size(); ++i) {
+        const bool deg = s[i] == s[i + 1] || s[i + 1] == s[i + 2] || s[i] == s[i + 2];
+        if (deg) {
+            ++run;
+        } else {
+            joins += run >= 2;
+            run = 0;
+        }
+    }
+    return joins + 1;
+}
+
+/// Same triangle with the same winding (any rotation of its corners).
+bool same_oriented(const ss::Triangle& a, const ss::Triangle& b) {
+    for (int k = 0; k < 3; ++k)
+        if (a[0] == b[k] && a[1] == b[(k + 1) % 3] && a[2] == b[(k + 2) % 3]) return true;
+    return false;
+}
+
+/// Interior vertices and those whose valence is not a multiple of 3. Each such vertex forces
+/// half a swap in any strip (issue 15), so 1 + off3 / (2F) indices per triangle is a floor.
+void count_interior_valence(const ss::TriangleSoup& s, uint64_t& interior, uint64_t& off3, uint64_t& max_valence) {
+    std::vector<uint64_t> e;
+    e.reserve(s.triangles.size() * 3);
+    std::vector<uint32_t> deg(s.points.size(), 0);
+    for (const ss::Triangle& t : s.triangles)
+        for (int k = 0; k < 3; ++k) {
+            e.push_back(uint64_t{t[k]} << 32 | t[(k + 1) % 3]);
+            ++deg[t[k]];  // one outgoing edge per incident face
+        }
+    std::sort(e.begin(), e.end());
+    std::vector<char> boundary(s.points.size(), 0);
+    for (const uint64_t x : e) {
+        const uint64_t twin = (x & 0xffffffffu) << 32 | x >> 32;
+        if (!std::binary_search(e.begin(), e.end(), twin)) boundary[x >> 32] = boundary[x & 0xffffffffu] = 1;
+    }
+    interior = off3 = 0;
+    max_valence = deg.empty() ? 0 : *std::max_element(deg.begin(), deg.end());
+    for (size_t v = 0; v < deg.size(); ++v) {
+        if (deg[v] == 0 || boundary[v]) continue;
+        ++interior;
+        off3 += deg[v] % 3 != 0;
+    }
+}
+
+std::string first_line(const std::string& s) {
+    return s.substr(0, s.find('\n'));
+}
+
+/// Runs the independent verifier; returns 1/0 and the first failure in `msg`.
+int verify_result(const ss::TriangleSoup& in, const ss::StripArrays& out, const std::vector<uint32_t>& indices, const ss::StripOptions& o,
+                  char* msg, size_t msg_size) {
+    ss::VerifyInput vi = ss::verify_input(in, out, indices);
+    vi.constraints = ss::vertex_pairs(o.constraint_edges);
+    vi.source = ss::index_of(o.source);
+    vi.target = ss::index_of(o.target);
+    const ss::VerifyReport rep = ss::verify(vi);
+    if (!rep.ok()) std::snprintf(msg, msg_size, "%s", first_line(rep.failures.front()).c_str());
+    return rep.ok() ? 1 : 0;
+}
+
+EdgeList read_walls(const std::string& path) {
+    EdgeList e;
+    std::ifstream in(path);
+    uint32_t a = 0, b = 0;
+    while (in >> a >> b) e.push_back({a, b});
+    return e;
+}
+
+}  // namespace
+
+void write_generated(const Spec& spec) {
+    const singlestrip::bench::Generated g = spec.generate();
+    singlestrip::bench::write_binary_ply(spec.path, g.soup);
+    if (!spec.walls_path.empty()) {
+        std::ofstream o(spec.walls_path);
+        for (const auto& [a, b] : g.walls) o << a << ' ' << b << '\n';
+        if (!o) throw ss::OutputError(spec.walls_path + ": write failed");
+    }
+}
+
+EngineRun measure_engine(const Spec& spec, ss::StripEngine engine, const std::string& out_path, const Settings& cfg) {
+    EngineRun r;
+    std::vector<double> tr, tc, ta, tb, te, tw, tt;
+    ss::StripArrays last;
+    std::vector<uint32_t> last_indices;
+    ss::StripOptions options;
+    options.engine = engine;
+    const auto start = Clock::now();
+    try {
+        for (int rep = 0; rep < spec.reps; ++rep) {
+            auto t = Clock::now();
+            ss::TriangleSoup soup;
+            try {
+                soup = ss::read_mesh_file(spec.path);
+            } catch (const ss::InputError& e) {
+                r.status = 1;  // a file the reader rejects (e.g. a point cloud) is skipped, not failed
+                set_message(r, e.what());
+                return r;
+            }
+            // Walls are read with the mesh, as `strip --constraints` would.
+            if (!spec.walls_path.empty()) options.constraint_edges = ss::as_constraints(read_walls(spec.walls_path));
+            tr.push_back(seconds_since(t));
+            t = Clock::now();
+            try {
+                soup = ss::prepare_soup(std::move(soup), ss::PrepareOptions{true}, spec.path);
+            } catch (const ss::InputError& e) {
+                r.status = 1;
+                set_message(r, e.what());
+                return r;
+            }
+            tc.push_back(seconds_since(t));
+            r.in_vertices = soup.points.size();
+            r.in_tris = soup.triangles.size();
+            t = Clock::now();
+            ss::Mesh mesh = ss::Mesh::from_soup(soup);
+            ta.push_back(seconds_since(t));
+            if (const uint32_t parts = mesh.num_components(); parts > 1) {  // timed here as one strip
+                r.status = 1;
+                set_message(r, std::to_string(parts) + " edge-connected components (the bench times one strip; stripify() strips each)");
+                return r;
+            }
+            // The mesh holds its own copy of everything: drop the soup, as a memory-aware caller would.
+            soup = ss::TriangleSoup{};
+            t = Clock::now();
+            ss::StripResult res = ss::build_strip(std::move(mesh), options);
+            tb.push_back(seconds_since(t));
+            t = Clock::now();
+            ss::StripArrays arr = ss::strip_arrays(res);
+            std::vector<uint32_t> indices = ss::encode_triangle_strip(arr.faces);
+            te.push_back(seconds_since(t));
+            if (rep == 0) {
+                const ss::StripStats& st = res.stats;
+                r.out_tris = st.output_triangles;
+                r.splits = st.splits;
+                r.swaps = st.swaps;
+                r.loops = st.loops;
+                r.fundamental = st.fundamental_triangles;
+                r.deferred = st.deferred_regions;
+                r.detours = st.detours;
+                r.genus = st.genus;
+                r.boundary_loops = st.boundary_loops;
+                r.indices = indices.size();
+                const std::vector<ss::Triangle> dec = ss::decode_triangle_strip(indices);
+                r.decode_ok = dec.size() == arr.faces.size() && arr.faces.size() == r.out_tris &&
+                              std::equal(dec.begin(), dec.end(), arr.faces.begin(), same_oriented);
+            }
+            res = ss::StripResult{};
+            t = Clock::now();
+            ss::write_strip_mesh(out_path, arr.points, arr.faces, arr.parent);
+            tw.push_back(seconds_since(t));
+            tt.push_back(tr.back() + tc.back() + ta.back() + tb.back() + te.back() + tw.back());
+            if (rep == 0) {
+                rusage ru{};
+                getrusage(RUSAGE_SELF, &ru);
+                r.peak_kb = static_cast<uint64_t>(ru.ru_maxrss);
+            }
+            last = std::move(arr);
+            last_indices = std::move(indices);
+            ++r.reps;
+            progress(".");
+            // A median of five minute-long runs tells little more than one, and the full run has
+            // to fit its time: stop when one more repetition would overrun the budget.
+            const double spent = seconds_since(start);
+            if (spent + spent / (rep + 1) > cfg.budget) break;
+        }
+    } catch (const std::exception& e) {
+        r.status = 2;
+        set_message(r, e.what());
+        return r;
+    }
+    r.t_read = median(tr);
+    r.t_check = median(tc);
+    r.t_adj = median(ta);
+    r.t_build = median(tb);
+    r.t_encode = median(te);
+    r.t_write = median(tw);
+    r.t_total = median(tt);
+    r.status = 0;
+    if (r.in_tris <= cfg.verify_max) {
+        try {
+            const ss::TriangleSoup soup = ss::prepare_soup(ss::read_mesh_file(spec.path), ss::PrepareOptions{true}, spec.path);
+            r.verified = verify_result(soup, last, last_indices, options, r.verify_message, sizeof r.verify_message);
+        } catch (const std::exception& e) {
+            r.verified = 0;
+            std::snprintf(r.verify_message, sizeof r.verify_message, "verifier: %s", e.what());
+        }
+    }
+    return r;
+}
+
+Reference measure_reference(const Spec& spec, int mreps, double budget) {
+    Reference r;
+    try {
+        std::error_code ec;
+        r.file_bytes = fs::file_size(spec.path, ec);
+        // Reading the bytes alone: the floor any reader of this file has (issue 17).
+        std::vector<double> tb;
+        std::vector<char> buf(r.file_bytes + 1);
+        for (int rep = 0; rep < 3; ++rep) {
+            const auto t = Clock::now();
+            std::FILE* f = std::fopen(spec.path.c_str(), "rb");
+            if (!f) break;
+            const size_t n = std::fread(buf.data(), 1, buf.size(), f);
+            std::fclose(f);
+            if (n != r.file_bytes) break;
+            tb.push_back(seconds_since(t));
+        }
+        buf = {};
+        r.t_bytes = median(tb);
+        ss::TriangleSoup soup;
+        if (!read_prepared(spec.path, soup, r)) return r;
+        r.in_vertices = soup.points.size();
+        r.in_tris = soup.triangles.size();
+        count_interior_valence(soup, r.interior, r.interior_off3, r.max_valence);
+        // optimizeVertexCacheStrip is quadratic in a vertex's valence (a 100K-triangle cone: 16 s,
+        // so about 25 minutes at 1M): past this valence meshoptimizer is left out, and said so.
+        if (r.max_valence > kMeshoptMaxValence) {
+            r.status = 0;
+            r.meshopt_skipped = true;
+            return r;
+        }
+        const size_t nidx = soup.triangles.size() * 3, nv = soup.points.size();
+        std::vector<unsigned> ib(nidx);
+        for (size_t f = 0; f < soup.triangles.size(); ++f)
+            for (int k = 0; k < 3; ++k) ib[3 * f + k] = soup.triangles[f][k];
+        soup = ss::TriangleSoup{};
+        std::vector<unsigned> opt(nidx), dst(meshopt_stripifyBound(nidx));
+        std::vector<double> tv, t1, t0;
+        size_t n1 = 0, n0 = 0;
+        const auto start = Clock::now();
+        for (int rep = 0; rep < mreps; ++rep) {
+            const auto t = Clock::now();
+            meshopt_optimizeVertexCacheStrip(opt.data(), ib.data(), nidx, nv);
+            tv.push_back(seconds_since(t));
+            if (seconds_since(start) > budget) break;  // slow (high valence): one or two runs say enough
+        }
+        for (int rep = 0; rep < mreps; ++rep) {
+            const auto t = Clock::now();
+            n1 = meshopt_stripify(dst.data(), opt.data(), nidx, nv, ~0u);
+            t1.push_back(seconds_since(t));
+        }
+        r.m_restart_indices = n1;
+        r.m_restart_strips = 1 + static_cast<uint64_t>(std::count(dst.begin(), dst.begin() + n1, ~0u));
+        for (int rep = 0; rep < mreps; ++rep) {
+            const auto t = Clock::now();
+            n0 = meshopt_stripify(dst.data(), opt.data(), nidx, nv, 0u);
+            t0.push_back(seconds_since(t));
+        }
+        dst.resize(n0);
+        r.m_degen_indices = n0;
+        r.m_degen_strips = count_degenerate_strips(dst);
+        r.m_vcache = median(tv);
+        r.m_restart = median(t1);
+        r.m_degen = median(t0);
+        r.status = 0;
+    } catch (const std::exception& e) {
+        r.status = 2;
+        set_message(r, std::string("reference: ") + e.what());
+    }
+    return r;
+}
+
+namespace {
+
+uint64_t edge_key(uint32_t a, uint32_t b) {
+    return uint64_t{std::min(a, b)} << 32 | std::max(a, b);
+}
+
+/// Pieces the faces fall into when `cuts` are removed from the dual graph: a set with more than
+/// one is refused by both engines (as it must be) and tells nothing about quality.
+size_t pieces_after_cutting(const ss::TriangleSoup& soup, const EdgeList& cuts) {
+    std::vector<uint64_t> cut;
+    for (auto [u, v] : cuts) cut.push_back(edge_key(u, v));
+    std::sort(cut.begin(), cut.end());
+    std::vector<std::pair<uint64_t, uint32_t>> e;
+    for (uint32_t f = 0; f < soup.triangles.size(); ++f)
+        for (int k = 0; k < 3; ++k) e.push_back({edge_key(soup.triangles[f][k], soup.triangles[f][(k + 1) % 3]), f});
+    std::sort(e.begin(), e.end());
+    std::vector<uint32_t> parent(soup.triangles.size());
+    std::iota(parent.begin(), parent.end(), 0u);
+    auto find = [&](uint32_t x) {
+        while (parent[x] != x) x = parent[x] = parent[parent[x]];
+        return x;
+    };
+    size_t pieces = soup.triangles.size();
+    for (size_t i = 0; i + 1 < e.size(); ++i) {
+        if (e[i].first != e[i + 1].first || std::binary_search(cut.begin(), cut.end(), e[i].first)) continue;
+        const uint32_t a = find(e[i].second), b = find(e[i + 1].second);
+        if (a != b) {
+            parent[a] = b;
+            --pieces;
+        }
+    }
+    return pieces;
+}
+
+/// Self-avoiding random walks along mesh edges: the recipe of tests/test_constraints.cpp
+/// (RandomConstraintsAndEndpointsOnRealMeshes): 1-6 polylines of up to 40 edges.
+EdgeList random_polylines(const ss::TriangleSoup& soup, std::mt19937_64& rng, int count, int max_len) {
+    std::vector<std::vector<uint32_t>> adj(soup.points.size());
+    for (const auto& t : soup.triangles)
+        for (int k = 0; k < 3; ++k) adj[t[k]].push_back(t[(k + 1) % 3]);
+    EdgeList edges;
+    for (int p = 0; p < count; ++p) {
+        uint32_t v = soup.triangles[rng() % soup.triangles.size()][0];
+        std::vector<uint32_t> seen{v};
+        const int len = 1 + static_cast<int>(rng() % max_len);
+        for (int s = 0; s < len && !adj[v].empty(); ++s) {
+            const uint32_t w = adj[v][rng() % adj[v].size()];
+            if (std::find(seen.begin(), seen.end(), w) != seen.end()) break;
+            seen.push_back(w);
+            edges.push_back({v, w});
+            v = w;
+        }
+    }
+    return edges;
+}
+
+}  // namespace
+
+ConstraintRun measure_constraints(const Spec& spec, const Settings& cfg) {
+    ConstraintRun r;
+    try {
+        ss::TriangleSoup soup;
+        if (!read_prepared(spec.path, soup, r)) return r;
+        r.in_tris = soup.triangles.size();
+        // As the engine children: build_strip() refuses several components (stripify() strips
+        // each), so these cases are skipped, not counted as failed builds.
+        if (const uint32_t parts = ss::Mesh::from_soup(soup).num_components(); parts > 1) {
+            r.status = 1;
+            set_message(r, std::to_string(parts) + " edge-connected components (build_strip() strips one)");
+            return r;
+        }
+        // Seeded by the name: the same cases on every run and for both engines.
+        uint64_t seed = 1469598103934665603ull;
+        for (const char ch : spec.name) seed = (seed ^ static_cast<unsigned char>(ch)) * 1099511628211ull;
+        std::mt19937_64 rng(seed);
+        r.cases = std::min(cfg.constraint_cases, kMaxCases);
+        for (int i = 0; i < r.cases; ++i) {
+            ss::StripOptions o;
+            for (int attempt = 0;; ++attempt) {
+                const EdgeList walls = random_polylines(soup, rng, 1 + static_cast<int>(rng() % 6), 40);
+                o.constraint_edges = ss::as_constraints(walls);
+                if (pieces_after_cutting(soup, walls) == 1 || attempt == 50) break;
+                ++r.redrawn;
+            }
+            o.source = ss::VertexId(soup.triangles[rng() % soup.triangles.size()][rng() % 3]);
+            o.target = ss::VertexId(soup.triangles[rng() % soup.triangles.size()][rng() % 3]);
+            ConstraintRun::Case& c = r.c[i];
+            c.constraint_edges = static_cast<uint32_t>(o.constraint_edges.size());
+            for (int e = 0; e < kEngines; ++e) {
+                o.engine = kEngine[e];
+                try {
+                    const ss::StripResult res = ss::build_strip(ss::Mesh::from_soup(soup), o);
+                    const ss::StripArrays arr = ss::strip_arrays(res);
+                    const std::vector<uint32_t> idx = ss::encode_triangle_strip(arr.faces);
+                    const double tri = double(r.in_tris);
+                    c.ok[e] = 1;
+                    c.extra[e] = 100.0 * (double(res.stats.output_triangles) - tri) / tri;
+                    c.idx_per_tri[e] = double(idx.size()) / tri;
+                    c.verified[e] = verify_result(soup, arr, idx, o, c.error[e], sizeof c.error[e]);
+                } catch (const std::exception& ex) {
+                    std::snprintf(c.error[e], sizeof c.error[e], "%s", first_line(ex.what()).c_str());
+                }
+            }
+            progress(".");
+        }
+        r.status = 0;
+    } catch (const std::exception& e) {
+        r.status = 2;
+        set_message(r, e.what());
+    }
+    return r;
+}
+
+}  // namespace singlestrip_bench
