@@ -124,6 +124,8 @@ private:
     std::vector<uint8_t> ball_whole_;  ///< faces of a ball that was its whole component
     void label_structures();
     void merge_all();
+    void merge_by_cost();
+    [[nodiscard]] int split_join_cost(uint32_t h) const;
     void reduce_loops();
     void absorb_loops();
     friend class PathGrower;

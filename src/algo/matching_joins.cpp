@@ -206,9 +206,50 @@ bool MatchingBuilder::try_merge(uint32_t h, bool allow_split) {
     return false;
 }
 
-// Free joins first (path ends, path ends into loops), then splits, then free joins again.
+// Swaps a split join of h adds. Each child pivots on its endpoint of h, so both cross edges swap
+// and each crossed outer edge of f and g changes state: 2 + 4 - 2 * (outer swaps), -2 to 6.
+int MatchingBuilder::split_join_cost(uint32_t h) const {
+    const uint32_t t = mesh_.twin(HalfedgeId(h)).idx();
+    int cost = 2;
+    for (uint32_t e : {Mesh::next(HalfedgeId(h)).idx(), Mesh::prev(HalfedgeId(h)).idx(), Mesh::next(HalfedgeId(t)).idx(),
+                       Mesh::prev(HalfedgeId(t)).idx()})
+        if (used_[e] && hdeg(face_of(e)) == 2 && hdeg(across(e)) == 2) cost += 1 - 2 * swap_at(e);
+    return cost;
+}
+
+// Split joins cheapest first (Kruskal over the loops, costs from split_join_cost, kept current
+// lazily): on a regular grid every split in the pattern costs 6 swaps, one where the pattern
+// already breaks costs less.
+void MatchingBuilder::merge_by_cost() {
+    constexpr int kLow = -2, kBuckets = 9;
+    std::vector<uint32_t> bucket[kBuckets];
+    auto candidate = [&](uint32_t h) {
+        if (!passable(h) || used_[h]) return false;
+        const uint32_t f = face_of(h), g = across(h);
+        const uint32_t a = find(sid_[f]), b = find(sid_[g]);
+        return a != b && (cycle_[a] || cycle_[b]) && !vlink_[f] && !vlink_[g];
+    };
+    for (uint32_t h = 0; h < mesh_.num_halfedges(); ++h)
+        if (h < mesh_.twin(HalfedgeId(h)).idx() && candidate(h)) bucket[split_join_cost(h) - kLow].push_back(h);
+    for (int i = 0; i < kBuckets; ++i)
+        while (!bucket[i].empty()) {
+            const uint32_t h = bucket[i].back();
+            bucket[i].pop_back();
+            if (!candidate(h)) continue;
+            const int c = split_join_cost(h) - kLow;
+            if (c > i) {
+                bucket[c].push_back(h);
+                continue;
+            }
+            try_merge(h, true);
+        }
+}
+
+// Free joins first (path ends, path ends into loops), then splits (cheapest first), then any
+// join left (the pass that guarantees one strip), then free joins again.
 void MatchingBuilder::merge_all() {
-    for (bool allow_split : {false, true, false})
+    for (bool allow_split : {false, true, false}) {
+        if (allow_split) merge_by_cost();
         for (uint32_t f = 0; f < mesh_.num_faces(); ++f)
             for (uint32_t k = 0; k < 3; ++k) {
                 const uint32_t h = 3 * f + k;
@@ -216,6 +257,7 @@ void MatchingBuilder::merge_all() {
                 if (find(sid_[f]) == find(sid_[mesh_.neighbor(HalfedgeId(h)).idx()]) && (cycle_[find(sid_[f])] || hdeg(f) == 2)) continue;
                 if (try_merge(h, allow_split)) k = kNone;  // f's edges changed: look at all three again
             }
+    }
 }
 
 bool MatchingBuilder::single_strip_ready() {
