@@ -84,10 +84,12 @@ TEST(Diagnose, ValidProceduralMeshesHaveNoProblemsAndRightTopology) {
         EXPECT_EQ(m.referenced_vertices, c.soup.points.size());
         // Counting identities that hold for any manifold: 3F = 2E - boundary edges.
         EXPECT_EQ(3 * m.faces, 2 * m.edges - m.boundary_edges);
-        // Agreement with the mesh core, which is built independently.
+        // Agreement with the mesh core, which counts on its corner table (the edge classifier
+        // and the genus formula are shared: src/core/soup_edges.hpp, topology.hpp).
         Mesh mesh = Mesh::from_soup(prepare_soup(c.soup, {}, c.name));
         EXPECT_EQ(mesh.num_boundary_loops(), m.boundary_loops);
         EXPECT_EQ(mesh.euler_characteristic(), m.euler_characteristic);
+        EXPECT_EQ(mesh.genus(), m.genus);
     }
 }
 

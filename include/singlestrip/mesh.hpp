@@ -93,7 +93,7 @@ private:
     uint32_t n_;
 };
 
-class SoupEdges;  // src/soup_edges.hpp
+class SoupEdges;  // src/core/soup_edges.hpp
 
 /// What split_edge() created. The split edge (a,b) with midpoint m separated face f=(a,b,c)
 /// and its twin face g=(b,a,d); four faces now cover them:
@@ -180,7 +180,8 @@ public:
     [[nodiscard]] std::vector<uint32_t> component_of_faces() const;
     /// V - E + F over referenced vertices.
     [[nodiscard]] long long euler_characteristic() const;
-    /// Genus of a connected orientable surface: (2 - chi - boundary_loops) / 2.
+    /// Genus of a connected orientable surface: (2 - chi - boundary_loops) / 2 (the library's
+    /// one formula, src/core/topology.hpp, which mesh_info() uses too).
     /// \pre num_components() == 1
     [[nodiscard]] long long genus() const;
 

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "core/soup_edges.hpp"
 #include "singlestrip/errors.hpp"
 
 namespace singlestrip {
@@ -73,18 +74,15 @@ TriangleSoup make_genus_surface(uint32_t g, uint32_t resolution) {
     for (const Triangle& t : top.triangles) s.triangles.push_back({t[0] + nv, t[2] + nv, t[1] + nv});
     // Walls: top boundary half-edge a->b (no b->a) pairs with the bottom's b'->a'; the quad
     // (b, a, a', b') uses b->a and a'->b', so orientation stays consistent.
-    std::vector<uint64_t> directed;  // a->b as (a << 32 | b), sorted for lookup
-    directed.reserve(3 * top.triangles.size());
-    for (const Triangle& t : top.triangles)
-        for (int k = 0; k < 3; ++k) directed.push_back(uint64_t{t[k]} << 32 | t[(k + 1) % 3]);
-    std::sort(directed.begin(), directed.end());
-    for (const Triangle& t : top.triangles) {
-        for (int k = 0; k < 3; ++k) {
-            const uint32_t a = t[k], b = t[(k + 1) % 3];
-            if (std::binary_search(directed.begin(), directed.end(), uint64_t{b} << 32 | a)) continue;
-            s.triangles.push_back({b, a, a + nv});
-            s.triangles.push_back({b, a + nv, b + nv});
-        }
+    std::vector<char> boundary(3 * top.triangles.size(), 0);  // per half-edge of the top grid
+    SoupEdges(top.triangles, nv).for_each_edge([&](const SoupEdges::Edge& e) {
+        if (e.kind == EdgeKind::boundary) boundary[*e.first] = 1;
+    });
+    for (uint32_t h = 0; h < boundary.size(); ++h) {
+        if (!boundary[h]) continue;
+        const uint32_t a = top.triangles[h / 3][h % 3], b = top.triangles[h / 3][(h % 3 + 1) % 3];
+        s.triangles.push_back({b, a, a + nv});
+        s.triangles.push_back({b, a + nv, b + nv});
     }
     return s;
 }

@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/soup_edges.hpp"
 #include "singlestrip/attributes.hpp"
 #include "singlestrip/errors.hpp"
 #include "singlestrip/validate.hpp"
@@ -21,35 +22,11 @@ namespace {
 
 constexpr uint32_t kNo = 0xffffffffu;
 
-/// Half-edges grouped by undirected edge: he[start[g] .. start[g+1]) is group g.
-struct EdgeGroups {
-    std::vector<uint32_t> he;
-    std::vector<uint32_t> start;
-};
-
 uint32_t from(const std::vector<Triangle>& t, uint32_t h) {
     return t[h / 3][h % 3];
 }
 uint32_t to(const std::vector<Triangle>& t, uint32_t h) {
     return t[h / 3][(h % 3 + 1) % 3];
-}
-
-EdgeGroups group_edges(const std::vector<Triangle>& t) {
-    std::vector<std::pair<uint64_t, uint32_t>> keys;
-    keys.reserve(3 * t.size());
-    for (uint32_t h = 0; h < 3 * t.size(); ++h) {
-        const uint64_t a = from(t, h), b = to(t, h);
-        keys.emplace_back((std::min(a, b) << 32) | std::max(a, b), h);
-    }
-    std::sort(keys.begin(), keys.end());
-    EdgeGroups g;
-    g.he.reserve(keys.size());
-    for (std::size_t i = 0; i < keys.size(); ++i) {
-        if (i == 0 || keys[i].first != keys[i - 1].first) g.start.push_back(static_cast<uint32_t>(i));
-        g.he.push_back(keys[i].second);
-    }
-    g.start.push_back(static_cast<uint32_t>(keys.size()));
-    return g;
 }
 
 /// The corner of face h/3 at vertex v (v is an end of half-edge h).
@@ -75,14 +52,13 @@ struct Work {
     // Every vertex gets one copy per fan of faces glued across uncut edges with exactly two faces;
     // corners are visited in index order, so the fan with the lowest corner keeps the vertex.
     void split_fans() {
-        const EdgeGroups g = group_edges(tris);
         UnionFind corners(3 * tris.size());
-        for (std::size_t i = 0; i + 1 < g.start.size(); ++i) {
-            if (g.start[i + 1] - g.start[i] != 2) continue;
-            const uint32_t h0 = g.he[g.start[i]], h1 = g.he[g.start[i] + 1];
-            if (cut[h0] || cut[h1]) continue;
+        edges().for_each_edge([&](const SoupEdges::Edge& e) {
+            if (e.num_halfedges() != 2) return;
+            const uint32_t h0 = e.first[0], h1 = e.first[1];
+            if (cut[h0] || cut[h1]) return;
             for (uint32_t v : {from(tris, h0), to(tris, h0)}) corners.unite(corner_at(tris, h0, v), corner_at(tris, h1, v));
-        }
+        });
         std::vector<uint32_t> assigned(3 * tris.size(), kNo);
         std::vector<char> taken(points.size(), 0);
         for (uint32_t c = 0; c < 3 * tris.size(); ++c) {
@@ -108,28 +84,23 @@ struct Work {
         }
     }
 
+    /// The faces' half-edges grouped and classified (soup_edges.hpp); valid until tris changes.
+    SoupEdges edges() const { return SoupEdges(tris, points.size()); }
+
     void record_non_manifold_edges() {
-        const EdgeGroups g = group_edges(tris);
-        for (std::size_t i = 0; i + 1 < g.start.size(); ++i)
-            if (g.start[i + 1] - g.start[i] > 2) {
-                const uint32_t h = g.he[g.start[i]];
-                rep.non_manifold_edges.emplace_back(std::min(from(tris, h), to(tris, h)), std::max(from(tris, h), to(tris, h)));
-            }
+        edges().for_each_edge([&](const SoupEdges::Edge& e) {
+            if (e.kind == EdgeKind::non_manifold) rep.non_manifold_edges.emplace_back(e.lo, e.hi);
+        });
     }
 
     /// Twin of each half-edge across an uncut edge with exactly two faces, else kNo.
     std::vector<uint32_t> twins() const {
-        const EdgeGroups g = group_edges(tris);
         std::vector<uint32_t> twin(3 * tris.size(), kNo);
-        for (std::size_t i = 0; i + 1 < g.start.size(); ++i) {
-            if (g.start[i + 1] - g.start[i] > 2)
-                throw InternalError("repair: edge still has " + std::to_string(g.start[i + 1] - g.start[i]) + " faces after the cut");
-            if (g.start[i + 1] - g.start[i] != 2) continue;
-            const uint32_t h0 = g.he[g.start[i]], h1 = g.he[g.start[i] + 1];
-            if (cut[h0] || cut[h1]) continue;
-            twin[h0] = h1;
-            twin[h1] = h0;
-        }
+        edges().for_each_edge([&](const SoupEdges::Edge& e) {
+            if (e.kind == EdgeKind::non_manifold)
+                throw InternalError("repair: edge still has " + std::to_string(e.num_halfedges()) + " faces after the cut");
+            if (e.kind != EdgeKind::boundary && !cut[e.first[0]] && !cut[e.first[1]]) SoupEdges::pair(e, twin);
+        });
         return twin;
     }
 

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/soup_edges.hpp"
+#include "core/topology.hpp"
 #include "singlestrip/errors.hpp"
 #include "singlestrip/mesh.hpp"
 #include "singlestrip/repair.hpp"
@@ -122,7 +123,7 @@ struct Analysis {
         corners_ = std::make_unique<UnionFind>(3 * nf);
         UnionFind bverts(nv);
         std::vector<char> on_boundary(nv, 0);
-        grouped->for_each_edge([&](uint32_t lo, uint32_t hi, Range b, Range e) { on_edge(lo, hi, b, e, faces, bverts, on_boundary); });
+        grouped->for_each_edge([&](const SoupEdges::Edge& e) { on_edge(e, faces, bverts, on_boundary); });
         grouped.reset();
         comp.assign(nf, kNone);
         std::vector<uint32_t> size_of_root(nf, 0);  // face ids are uint32_t throughout
@@ -140,34 +141,40 @@ struct Analysis {
 
     uint32_t corner_at(uint32_t h, uint32_t v) const { return from(h) == v ? h : 3 * (h / 3) + (h % 3 + 1) % 3; }
 
-    using Range = std::vector<uint32_t>::const_iterator;
+    using Range = SoupEdges::Iterator;
 
-    void on_edge(uint32_t lo, uint32_t hi, Range b, Range e, UnionFind& faces, UnionFind& bverts, std::vector<char>& on_boundary) {
+    void on_edge(const SoupEdges::Edge& e, UnionFind& faces, UnionFind& bverts, std::vector<char>& on_boundary) {
         ++edges;
-        const auto n = static_cast<std::size_t>(e - b);
-        if (n >= 2) report_duplicates(lo, hi, b, e);
-        for (auto i = b + 1; i < e; ++i) {
+        const uint32_t lo = e.lo, hi = e.hi;
+        const Range b = e.first;
+        if (e.kind != EdgeKind::boundary) report_duplicates(lo, hi, b, e.last);
+        for (auto i = b + 1; i < e.last; ++i) {
             faces.unite(*b / 3, *i / 3);
             corners_->unite(corner_at(*b, lo), corner_at(*i, lo));
             corners_->unite(corner_at(*b, hi), corner_at(*i, hi));
         }
-        if (n == 1) {
-            ++boundary_edges;
-            bverts.unite(lo, hi);
-            on_boundary[lo] = on_boundary[hi] = 1;
-        } else if (n == 2) {
-            twin[b[0]] = b[1];
-            twin[b[1]] = b[0];
-            if (from(b[0]) == from(b[1])) {
+        switch (e.kind) {
+            case EdgeKind::boundary:
+                ++boundary_edges;
+                bverts.unite(lo, hi);
+                on_boundary[lo] = on_boundary[hi] = 1;
+                return;
+            case EdgeKind::inconsistent:
                 oriented = false;
                 inconsistent.add(edge_name(lo, hi) + ": faces " + fid(b[0] / 3) + " and " + fid(b[1] / 3) + " both run from " +
                                  std::to_string(from(b[0])) + " to " + std::to_string(to(b[0])) + " (inconsistent orientation)");
+                [[fallthrough]];
+            case EdgeKind::manifold:
+                SoupEdges::pair(e, twin);
+                return;
+            case EdgeKind::non_manifold: {
+                ++non_manifold_edges;
+                std::string fs;
+                for (auto i = b; i < e.last; ++i) fs += (i > b ? ", " : "") + fid(*i / 3);
+                nm_edge.add(edge_name(lo, hi) + " is shared by " + std::to_string(e.num_halfedges()) + " faces (" + fs +
+                            "); at most 2 are allowed");
+                return;
             }
-        } else {
-            ++non_manifold_edges;
-            std::string fs;
-            for (auto i = b; i < e; ++i) fs += (i > b ? ", " : "") + fid(*i / 3);
-            nm_edge.add(edge_name(lo, hi) + " is shared by " + std::to_string(n) + " faces (" + fs + "); at most 2 are allowed");
         }
     }
 
@@ -413,7 +420,7 @@ MeshInfo mesh_info(const TriangleSoup& soup) {
     info.components = a.component_sizes.size();
     info.component_sizes = a.component_sizes;
     info.boundary_loops = a.boundary_loops;
-    info.euler_characteristic = static_cast<long long>(a.referenced) - static_cast<long long>(a.edges) + static_cast<long long>(info.faces);
+    info.euler_characteristic = euler_characteristic(a.referenced, a.edges, info.faces);
     info.orientable = a.orientable;
     info.oriented = a.oriented;
     info.problems = a.problems();
@@ -421,9 +428,7 @@ MeshInfo mesh_info(const TriangleSoup& soup) {
     // Genus by chi = 2c - 2g - b, meaningful for a manifold orientable surface.
     info.genus_valid = a.orientable && a.non_manifold_edges == 0 && a.nm_vertex.total == 0 && info.components >= 1 &&
                        a.out_of_range.total == 0 && a.repeated.total == 0;
-    if (info.genus_valid)
-        info.genus =
-            (2 * static_cast<long long>(info.components) - info.euler_characteristic - static_cast<long long>(info.boundary_loops)) / 2;
+    if (info.genus_valid) info.genus = genus_from_euler(info.euler_characteristic, info.boundary_loops, info.components);
     return info;
 }
 

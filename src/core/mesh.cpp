@@ -8,6 +8,7 @@
 #include "gentle_growth.hpp"
 #include "singlestrip/errors.hpp"
 #include "soup_edges.hpp"
+#include "topology.hpp"
 
 namespace singlestrip {
 
@@ -56,20 +57,22 @@ Mesh Mesh::build(const std::vector<Triangle>& triangles, std::vector<Point3> poi
 }
 
 void Mesh::pair_halfedges(const SoupEdges& edges) {
-    edges.for_each_edge([&](uint32_t, uint32_t, auto first, auto last) {
-        const uint32_t h0 = *first;
-        const auto n = last - first;
-        if (n > 2)
-            throw InputError("edge (" + std::to_string(edges.from(h0)) + ", " + std::to_string(edges.to(h0)) + ") has " +
-                             std::to_string(n) + " faces (non-manifold edge)");
-        if (n < 2) return;
-        const uint32_t h1 = first[1];
-        if (edges.from(h0) == edges.from(h1))
-            throw InputError("faces " + std::to_string(h0 / 3) + " and " + std::to_string(h1 / 3) + " traverse edge (" +
-                             std::to_string(edges.from(h0)) + ", " + std::to_string(edges.to(h0)) +
-                             ") in the same direction (inconsistent orientation)");
-        twin_[h0] = h1;
-        twin_[h1] = h0;
+    edges.for_each_edge([&](const SoupEdges::Edge& e) {
+        const uint32_t h0 = *e.first;
+        switch (e.kind) {
+            case EdgeKind::boundary:
+                return;
+            case EdgeKind::non_manifold:
+                throw InputError("edge (" + std::to_string(edges.from(h0)) + ", " + std::to_string(edges.to(h0)) + ") has " +
+                                 std::to_string(e.num_halfedges()) + " faces (non-manifold edge)");
+            case EdgeKind::inconsistent:
+                throw InputError("faces " + std::to_string(h0 / 3) + " and " + std::to_string(e.first[1] / 3) + " traverse edge (" +
+                                 std::to_string(edges.from(h0)) + ", " + std::to_string(edges.to(h0)) +
+                                 ") in the same direction (inconsistent orientation)");
+            case EdgeKind::manifold:
+                SoupEdges::pair(e, twin_);
+                return;
+        }
     });
 }
 
@@ -241,11 +244,11 @@ uint32_t Mesh::num_components() const {
 }
 
 long long Mesh::euler_characteristic() const {
-    return static_cast<long long>(num_referenced_vertices()) - num_edges() + num_faces();
+    return singlestrip::euler_characteristic(num_referenced_vertices(), num_edges(), num_faces());
 }
 
 long long Mesh::genus() const {
-    return (2 - euler_characteristic() - static_cast<long long>(num_boundary_loops())) / 2;
+    return genus_from_euler(euler_characteristic(), num_boundary_loops(), 1);
 }
 
 void Mesh::validate() const {

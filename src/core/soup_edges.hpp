@@ -1,6 +1,7 @@
-// singlestrip — internal: the half-edges of a triangle list grouped by undirected edge, the one
-// edge pairing the library builds its topology on (Mesh::from_soup, validate.cpp's analysis, the
-// constraint-edge checks). The verifier keeps its own independent copy on purpose.
+// singlestrip — internal: the half-edges of a triangle list grouped by undirected edge and each
+// edge classified, the one edge pairing the library builds its topology on (Mesh::from_soup,
+// validate.cpp's analysis, repair.cpp, the generators in models.cpp, the constraint-edge check).
+// The verifier keeps its own independent copy on purpose.
 #pragma once
 
 #include <algorithm>
@@ -11,13 +12,34 @@
 
 namespace singlestrip {
 
+/// What an undirected edge of a soup is, by the half-edges on it: the one classification the
+/// library's topology uses (Mesh::from_soup, validate.cpp's analysis, repair.cpp).
+enum class EdgeKind : uint8_t {
+    boundary,      ///< one half-edge
+    manifold,      ///< two half-edges running opposite ways: an interior edge
+    inconsistent,  ///< two half-edges running the same way: the faces disagree on orientation
+    non_manifold,  ///< three or more half-edges
+};
+
 /// Half-edge h = 3f + k runs from triangles[f][k] to triangles[f][(k + 1) % 3]. `halfedges` lists
 /// them ordered by (smaller end, larger end, h): the half-edges of one undirected edge are
 /// adjacent, and start[v] .. start[v + 1] is the range whose smaller end is v.
+/// The triangles must outlive the SoupEdges and keep their vertices while it is used.
 class SoupEdges {
 public:
+    using Iterator = std::vector<uint32_t>::const_iterator;
+
+    /// One undirected edge: its ends lo < hi, its kind, its half-edges [first, last) ascending.
+    struct Edge {
+        uint32_t lo, hi;
+        EdgeKind kind;
+        Iterator first, last;
+        [[nodiscard]] size_t num_halfedges() const { return static_cast<size_t>(last - first); }
+    };
+
     /// Leaves out the faces with usable[f] == 0 (when `usable` is given) and any half-edge with an
-    /// end >= num_vertices. Two stable counting sorts, no comparisons: O(V + F).
+    /// end >= num_vertices. Two stable counting sorts, no comparisons: O(V + F). No errors (a
+    /// face that repeats a vertex gives half-edges with lo == hi, grouped like any other).
     SoupEdges(const std::vector<Triangle>& triangles, size_t num_vertices, const std::vector<char>* usable = nullptr);
 
     [[nodiscard]] uint32_t from(uint32_t h) const { return (*triangles_)[h / 3][h % 3]; }
@@ -26,20 +48,34 @@ public:
     [[nodiscard]] uint32_t hi(uint32_t h) const { return std::max(from(h), to(h)); }
     [[nodiscard]] size_t num_vertices() const { return start_.size() - 1; }
 
-    /// Calls fn(lo, hi, first, last) for every undirected edge, in (lo, hi) order; [first, last)
-    /// are its half-edges (iterators into halfedges()), ascending.
+    /// The kind of the edge whose half-edges are [first, last) (one group of halfedges()). O(1).
+    [[nodiscard]] EdgeKind classify(Iterator first, Iterator last) const {
+        const auto n = last - first;
+        if (n == 1) return EdgeKind::boundary;
+        if (n > 2) return EdgeKind::non_manifold;
+        return from(first[0]) == from(first[1]) ? EdgeKind::inconsistent : EdgeKind::manifold;
+    }
+
+    /// Calls fn(const Edge&) for every undirected edge, in (lo, hi) order. O(V + F) in all.
     template <class Fn>
     void for_each_edge(Fn&& fn) const {
         for (size_t v = 0; v + 1 < start_.size(); ++v) {
-            const auto b = halfedges_.begin() + start_[v], e = halfedges_.begin() + start_[v + 1];
-            for (auto i = b; i != e;) {
+            const Iterator b = halfedges_.begin() + start_[v], e = halfedges_.begin() + start_[v + 1];
+            for (Iterator i = b; i != e;) {
                 const uint32_t other = hi(*i);
-                auto j = i + 1;
+                Iterator j = i + 1;
                 while (j != e && hi(*j) == other) ++j;
-                fn(static_cast<uint32_t>(v), other, i, j);
+                fn(Edge{static_cast<uint32_t>(v), other, classify(i, j), i, j});
                 i = j;
             }
         }
+    }
+
+    /// Sets twin[h0] = h1 and twin[h1] = h0 for the two half-edges of a manifold or inconsistent
+    /// edge (twin indexed by half-edge). \pre e.num_halfedges() == 2.
+    static void pair(const Edge& e, std::vector<uint32_t>& twin) {
+        twin[e.first[0]] = e.first[1];
+        twin[e.first[1]] = e.first[0];
     }
 
     /// Whether some half-edge joins a and b (either way). O(log degree).
