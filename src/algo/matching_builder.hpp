@@ -81,7 +81,9 @@ private:
     bool chain_reaches_branch(uint32_t f, uint32_t from) const;
     void match_fans();
     static constexpr uint32_t kFanValence = 32;  ///< fans of this many faces or more: one loop
-    void match_patterned();
+    void match_patterned(bool mates);
+    void choose_pattern();
+    [[nodiscard]] long pattern_cost() const;
     bool augment_from(uint32_t u, std::vector<uint32_t>& stamp, uint32_t mark, size_t budget);
     // Augmenting path from one short face through blossoms (matching_blossom.cpp).
     enum class Search { Found, NoPath, Unknown };
