@@ -69,7 +69,7 @@ bool MatchingBuilder::meets_first(uint32_t from, uint32_t back, uint32_t good, u
 // from h_p away from t_p reaches h_q before t_q (else it splits off again): checked by walking
 // it. Depth-first from f1 through at most kMaxLoops crossed edges, at most one loop met twice.
 bool MatchingBuilder::flip_alternating(uint32_t f1) {
-    constexpr uint32_t kMaxLoops = 5;
+    constexpr uint32_t kMaxLoops = 4;
     if (vlink_[f1]) return false;
     uint32_t m1 = kNone;  // f1's matched edge closes the cycle
     for (uint32_t h = 3 * f1; h < 3 * f1 + 3; ++h)
