@@ -23,11 +23,9 @@
 using namespace singlestrip;
 namespace fs = std::filesystem;
 
-namespace {
+using singlestrip::test::test_data;
 
-std::string data(const std::string& name) {
-    return std::string(SINGLESTRIP_SOURCE_DIR) + "/tests/data/" + name;
-}
+namespace {
 
 struct Scratch : singlestrip::test::ScratchDir {
     Scratch() : ScratchDir("classes") {}
@@ -56,7 +54,7 @@ TEST(AssetClasses, BrokenConnectivityStripsWithRepairAndVerifies) {
     Scratch dir;
     for (const char* f : {"non_manifold_edge.off", "non_manifold_vertex.off", "duplicate_face.off", "repeated_vertex.off",
                           "two_components.off", "moebius.off"})
-        strips_and_verifies(data(f), dir / (std::string(f) + ".ply"));
+        strips_and_verifies(test_data(f), dir / (std::string(f) + ".ply"));
 }
 
 TEST(AssetClasses, UnweldedSoupBecomesOneStrip) {
@@ -103,10 +101,10 @@ TEST(AssetClasses, PlyTristripsStripAndVerify) {
 
 TEST(AssetClasses, ObjWithTextureAndNormalSeams) {
     Scratch dir;
-    for (const char* ext : {".obj", ".ply", ".glb"}) strips_and_verifies(data("sphere_uv.obj"), dir / (std::string("out") + ext));
+    for (const char* ext : {".obj", ".ply", ".glb"}) strips_and_verifies(test_data("sphere_uv.obj"), dir / (std::string("out") + ext));
 }
 
 TEST(AssetClasses, GltfSceneWithSeveralTexturedPrimitives) {
     Scratch dir;
-    for (const char* out : {"out.glb", "out.gltf", "out.ply", "out.obj"}) strips_and_verifies(data("scene.glb"), dir / out);
+    for (const char* out : {"out.glb", "out.gltf", "out.ply", "out.obj"}) strips_and_verifies(test_data("scene.glb"), dir / out);
 }

@@ -30,10 +30,18 @@
 using namespace singlestrip;
 namespace fs = std::filesystem;
 
+using singlestrip::test::test_data;
+
 namespace {
 
-std::string data(const std::string& name) {
-    return std::string(SINGLESTRIP_SOURCE_DIR) + "/tests/data/" + name;
+/// Reading `path` must throw InputError whose message contains `fragment`.
+void expect_refused(const std::string& path, const std::string& fragment) {
+    try {
+        read_mesh_file(path);
+        ADD_FAILURE() << path << " accepted";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
+    }
 }
 
 struct Scratch : singlestrip::test::ScratchDir {
@@ -115,7 +123,7 @@ void expect_midpoints_blended(const PipelineResult& r) {
 }  // namespace
 
 TEST(ObjAttributes, SeamsBecomeVerticesOfTheirOwn) {
-    const TriangleSoup s = read_mesh_file(data("sphere_uv.obj"));
+    const TriangleSoup s = read_mesh_file(test_data("sphere_uv.obj"));
     // 42 positions; the u = 0/1 meridian (5 rings) and the two poles (8 texture coordinates each)
     // give 5 + 7 + 7 more vertices.
     ASSERT_EQ(s.points.size(), 61u);
@@ -138,7 +146,7 @@ TEST(ObjAttributes, SeamsBecomeVerticesOfTheirOwn) {
 }
 
 TEST(ObjAttributes, MidpointsGetBlendedAttributesAndInputVerticesKeepTheirs) {
-    const TriangleSoup s = read_mesh_file(data("sphere_uv.obj"));
+    const TriangleSoup s = read_mesh_file(test_data("sphere_uv.obj"));
     const PipelineResult r = stripify(s, PipelineOptions{});
     ASSERT_EQ(r.arrays.attributes.size(), 2u);
     ASSERT_GT(r.strip.stats.splits, 0u);
@@ -152,7 +160,7 @@ TEST(ObjAttributes, MidpointsGetBlendedAttributesAndInputVerticesKeepTheirs) {
 
 TEST(ObjAttributes, EveryOutputFormatWritesWhatItHoldsAndVerifies) {
     Scratch dir("formats");
-    const std::string in = data("sphere_uv.obj");
+    const std::string in = test_data("sphere_uv.obj");
     const PipelineResult r = stripify(read_mesh_file(in), PipelineOptions{});
     for (const char* name : {"o.obj", "o.ply", "o.glb", "o.gltf", "o.off"}) {
         SCOPED_TRACE(name);
@@ -192,12 +200,7 @@ TEST(ObjAttributes, BadTextureOrNormalReferenceNamesFileLineAndProblem) {
         SCOPED_TRACE(c.face);
         const std::string path = dir / "bad.obj";
         write_file(path, head + c.face);
-        try {
-            read_mesh_file(path);
-            ADD_FAILURE() << "accepted";
-        } catch (const InputError& e) {
-            EXPECT_NE(std::string(e.what()).find(path + ": " + c.message), std::string::npos) << e.what();
-        }
+        expect_refused(path, path + ": " + c.message);
         EXPECT_EQ(cli("strip '" + path + "' -o '" + dir / "o.ply'").code, 3);  // bad input (docs)
     }
     write_file(dir / "vt.obj", "v 0 0 0\nvt 0 nan\n");
@@ -206,14 +209,14 @@ TEST(ObjAttributes, BadTextureOrNormalReferenceNamesFileLineAndProblem) {
 
 TEST(ObjAttributes, AStreamOnlySomeCornersHaveIsNotKept) {
     // tests/data/pyramid_slashes.obj mixes "i", "i/t", "i//n" and "i/t/n" corners.
-    const TriangleSoup s = read_mesh_file(data("pyramid_slashes.obj"));
+    const TriangleSoup s = read_mesh_file(test_data("pyramid_slashes.obj"));
     EXPECT_TRUE(s.attributes.empty());
     EXPECT_EQ(s.points.size(), 6u);
 }
 
 TEST(ObjAttributes, VertexColoursAreKeptAndFollowTheSeams) {
     Scratch dir("colours");
-    std::ifstream in(data("sphere_uv.obj"));
+    std::ifstream in(test_data("sphere_uv.obj"));
     std::string obj, line;
     int v = 0;
     while (std::getline(in, line)) {
@@ -245,7 +248,7 @@ TEST(ObjAttributes, VertexColoursAreKeptAndFollowTheSeams) {
 
 TEST(PlyAttributes, VertexPropertiesAreReadCarriedAndWrittenBack) {
     Scratch dir("ply");
-    const std::string in = data("sphere_attrs.ply");
+    const std::string in = test_data("sphere_attrs.ply");
     const TriangleSoup s = read_mesh_file(in);
     std::vector<std::string> names;
     for (const auto& a : s.attributes) names.push_back(a.name);
@@ -288,17 +291,12 @@ TEST(PlyAttributes, NonFiniteBinaryPropertyIsRefused) {
     const float v[4] = {0, 0, 0, std::nanf("")};
     ply.append(reinterpret_cast<const char*>(v), sizeof v);
     write_file(dir / "nan.ply", ply);
-    try {
-        read_mesh_file(dir / "nan.ply");
-        ADD_FAILURE() << "accepted";
-    } catch (const InputError& e) {
-        EXPECT_NE(std::string(e.what()).find("vertex 0: property 'nx' is not finite"), std::string::npos) << e.what();
-    }
+    expect_refused(dir / "nan.ply", "vertex 0: property 'nx' is not finite");
 }
 
 TEST(GltfAttributes, SceneIntoPlyAndObjKeepsItsAttributes) {
     Scratch dir("gltf");
-    const std::string in = data("scene.glb");
+    const std::string in = test_data("scene.glb");
     const TriangleSoup s = read_gltf_soup(in);
     ASSERT_NE(find_attribute(s.attributes, "TEXCOORD_0"), nullptr);
     ASSERT_NE(find_attribute(s.attributes, "NORMAL"), nullptr);
@@ -425,14 +423,7 @@ TEST(OffAttributes, EachVariantKeepsWhatItHoldsAndRefusesAWrongCount) {
     const std::vector<double> b = read_mesh_file(dir / "b.off").attributes[0].values;
     EXPECT_EQ(b, (std::vector<double>{1, 0, 0, 0, 0, 1.0 / 255, 0.5, 0.5, 0.5}));
     write_file(dir / "short.off", "STOFF\n3 1 0\n0 0 0 0.5\n1 0 0 0 0\n0 1 0 1 1\n3 0 1 2\n");
-    try {
-        read_mesh_file(dir / "short.off");
-        ADD_FAILURE() << "accepted";
-    } catch (const InputError& e) {
-        EXPECT_NE(std::string(e.what()).find("line 3: vertex 0 has 4 numbers; a STOFF vertex needs 3 plus 2 texture coordinates"),
-                  std::string::npos)
-            << e.what();
-    }
+    expect_refused(dir / "short.off", "line 3: vertex 0 has 4 numbers; a STOFF vertex needs 3 plus 2 texture coordinates");
     write_file(dir / "4.off", "4OFF\n3 1 0\n0 0 0 1\n1 0 0 1\n0 1 0 1\n3 0 1 2\n");
     EXPECT_THROW(read_mesh_file(dir / "4.off"), InputError);
 }
@@ -459,12 +450,7 @@ TEST(OffAttributes, BinaryNoffKeepsItsNormalsAndBinaryStoffIsRefusedByName) {
     EXPECT_EQ(s.attributes[0].values, (std::vector<double>{0, 0, 1, 0.6f, 0, 0.8f, 0, 0.6f, 0.8f}));
     EXPECT_EQ(s.points[1], (Point3{1, 0, 0}));
     write_file(dir / "st.off", body("STNOFF BINARY\n"));
-    try {
-        read_mesh_file(dir / "st.off");
-        ADD_FAILURE() << "accepted";
-    } catch (const InputError& e) {
-        EXPECT_NE(std::string(e.what()).find("texture coordinates in a binary OFF"), std::string::npos) << e.what();
-    }
+    expect_refused(dir / "st.off", "texture coordinates in a binary OFF");
 }
 
 TEST(OffAttributes, OffOutputWritesThemBackAndVerifies) {
@@ -514,7 +500,7 @@ std::string joined(const std::vector<std::string>& lines) {
 
 TEST(VerifyAttributes, RealOutputsPassAndSayWhatWasChecked) {
     Scratch dir("verifyreal");
-    const std::string in = data("sphere_attrs.ply");
+    const std::string in = test_data("sphere_attrs.ply");
     const struct {
         const char* name;
         const char* checked;
@@ -577,7 +563,7 @@ TEST(VerifyAttributes, AMutatedOutputFailsNamingVertexAttributeAndValues) {
 }
 
 TEST(VerifyAttributes, NearestAttributesTakeOneEndpointsValues) {
-    const TriangleSoup s = read_mesh_file(data("sphere_attrs.ply"));
+    const TriangleSoup s = read_mesh_file(test_data("sphere_attrs.ply"));
     const PipelineResult r = stripify(s, PipelineOptions{});
     VerifyInput vi = verify_input(r.input, r.arrays, r.indices);
     vi.in_attributes = r.input.attributes;

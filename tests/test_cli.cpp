@@ -21,11 +21,9 @@
 
 namespace fs = std::filesystem;
 
-namespace {
+using singlestrip::test::test_data;
 
-std::string data(const std::string& name) {
-    return std::string(SINGLESTRIP_SOURCE_DIR) + "/tests/data/" + name;
-}
+namespace {
 
 using CliRun = singlestrip::test::ShellRun;  // out: stdout and stderr, merged
 using singlestrip::test::shell_quote;
@@ -54,33 +52,33 @@ std::string slurp(const std::string& path) {
 }  // namespace
 
 TEST(Cli, InfoExitCodesAndReport) {
-    CliRun ok = cli("info " + q(data("pyramid_quad.off")));
+    CliRun ok = cli("info " + q(test_data("pyramid_quad.off")));
     EXPECT_EQ(ok.code, 0) << ok.out;
     EXPECT_NE(ok.out.find("valid for stripping:  yes"), std::string::npos) << ok.out;
     EXPECT_NE(ok.out.find("from 5 polygons"), std::string::npos) << ok.out;
 
-    CliRun bad = cli("info " + q(data("tetra_one_flipped.off")));
+    CliRun bad = cli("info " + q(test_data("tetra_one_flipped.off")));
     EXPECT_EQ(bad.code, 3) << bad.out;
     EXPECT_NE(bad.out.find("[inconsistent_orientation] edge (0, 2)"), std::string::npos) << bad.out;
 
-    CliRun fixed = cli("info --orient " + q(data("tetra_one_flipped.off")));
+    CliRun fixed = cli("info --orient " + q(test_data("tetra_one_flipped.off")));
     EXPECT_EQ(fixed.code, 0) << fixed.out;
 
-    CliRun js = cli("info --json " + q(data("two_components.off")));
+    CliRun js = cli("info --json " + q(test_data("two_components.off")));
     EXPECT_EQ(js.code, 0) << js.out;  // several components: one strip each
     auto j = nlohmann::json::parse(js.out);
     EXPECT_EQ(j["components"], 3);
     EXPECT_EQ(j["valid"], true);
     EXPECT_TRUE(j["problems"].empty());
 
-    CliRun dup = cli("info --json " + q(data("duplicate_face.off")));
+    CliRun dup = cli("info --json " + q(test_data("duplicate_face.off")));
     EXPECT_EQ(dup.code, 3) << dup.out;
-    CliRun rep = cli("info --json --repair " + q(data("duplicate_face.off")));
+    CliRun rep = cli("info --json --repair " + q(test_data("duplicate_face.off")));
     EXPECT_EQ(rep.code, 0) << rep.out;
     const auto rj = nlohmann::json::parse(rep.out.substr(rep.out.find('{')));
     EXPECT_EQ(rj["repair"]["duplicate_faces"], 1);
 
-    CliRun moebius = cli("info --orient --json " + q(data("moebius.off")));
+    CliRun moebius = cli("info --orient --json " + q(test_data("moebius.off")));
     EXPECT_EQ(moebius.code, 3);
     EXPECT_EQ(nlohmann::json::parse(moebius.out)["orientable"], false);
 
@@ -92,9 +90,9 @@ TEST(Cli, InfoExitCodesAndReport) {
 TEST(Cli, ReadErrorsExitThreeWithMessage) {
     for (const char* f : {"empty.off", "nan.off", "index_out_of_range.off", "truncated_binary.stl", "missing.off"}) {
         SCOPED_TRACE(f);
-        CliRun r = cli("info " + q(data(f)));
+        CliRun r = cli("info " + q(test_data(f)));
         EXPECT_EQ(r.code, 3) << r.out;
-        EXPECT_EQ(r.out.rfind("singlestrip: error: " + data(f) + ": ", 0), 0u) << r.out;
+        EXPECT_EQ(r.out.rfind("singlestrip: error: " + test_data(f) + ": ", 0), 0u) << r.out;
     }
 }
 
@@ -102,14 +100,14 @@ TEST(Cli, UsageErrorsExitTwo) {
     EXPECT_EQ(cli("").code, 2);
     EXPECT_EQ(cli("strip").code, 2);
     EXPECT_EQ(cli("info a.off --no-such-option").code, 2);
-    EXPECT_EQ(cli("strip " + q(data("tetra.off")) + " -o x.ply --seed-face notanumber").code, 2);
+    EXPECT_EQ(cli("strip " + q(test_data("tetra.off")) + " -o x.ply --seed-face notanumber").code, 2);
     EXPECT_EQ(cli("--help").code, 0);
 }
 
 TEST(Cli, StripWritesConsistentOutputsAndReport) {
     Scratch s("strip");
-    CliRun r = cli("strip " + q(data("pyramid_slashes.obj")) + " -o " + q(s / "o.ply") + " --indices " + q(s / "i.txt") + " --report " +
-                   q(s / "r.json"));
+    CliRun r = cli("strip " + q(test_data("pyramid_slashes.obj")) + " -o " + q(s / "o.ply") + " --indices " + q(s / "i.txt") +
+                   " --report " + q(s / "r.json"));
     ASSERT_EQ(r.code, 0) << r.out;
     EXPECT_NE(r.out.find("6 ->"), std::string::npos) << r.out;  // one-line summary
     auto rep = nlohmann::json::parse(slurp(s / "r.json"));
@@ -120,7 +118,7 @@ TEST(Cli, StripWritesConsistentOutputsAndReport) {
     EXPECT_EQ(rep["input_triangles"], 6);
 
     // The output keeps the input vertices first, unchanged, and the index file decodes to its faces.
-    singlestrip::TriangleSoup in = singlestrip::read_mesh_file(data("pyramid_slashes.obj"));
+    singlestrip::TriangleSoup in = singlestrip::read_mesh_file(test_data("pyramid_slashes.obj"));
     singlestrip::TriangleSoup out = singlestrip::read_mesh_file(s / "o.ply");
     ASSERT_GE(out.points.size(), in.points.size());
     for (size_t v = 0; v < in.points.size(); ++v) EXPECT_EQ(out.points[v], in.points[v]);
@@ -136,13 +134,13 @@ TEST(Cli, StripWritesConsistentOutputsAndReport) {
     };
     EXPECT_EQ(canonical(singlestrip::decode_triangle_strip(idx)), canonical(out.triangles));
 
-    CliRun v = cli("verify " + q(data("pyramid_slashes.obj")) + " " + q(s / "o.ply") + " --indices " + q(s / "i.txt"));
+    CliRun v = cli("verify " + q(test_data("pyramid_slashes.obj")) + " " + q(s / "o.ply") + " --indices " + q(s / "i.txt"));
     EXPECT_EQ(v.code, 0) << v.out;
 }
 
 TEST(Cli, EngineChoiceReachesTheStripAndTheReport) {
     Scratch s("engine");
-    const std::string in = data("pyramid_slashes.obj");
+    const std::string in = test_data("pyramid_slashes.obj");
     for (const char* engine : {"matching", "growth"}) {
         SCOPED_TRACE(engine);
         const std::string out = s / (std::string(engine) + ".ply"), idx = s / (std::string(engine) + ".txt"),
@@ -162,10 +160,10 @@ TEST(Cli, EngineChoiceReachesTheStripAndTheReport) {
 
 TEST(Cli, UnknownEngineIsAUsageError) {
     Scratch s("bad-engine");
-    CliRun r = cli("strip " + q(data("tetra.off")) + " -o " + q(s / "o.ply") + " --engine greedy");
+    CliRun r = cli("strip " + q(test_data("tetra.off")) + " -o " + q(s / "o.ply") + " --engine greedy");
     EXPECT_EQ(r.code, 2) << r.out;
     EXPECT_NE(r.out.find("unknown engine 'greedy' (choices: matching, growth)"), std::string::npos) << r.out;
-    EXPECT_EQ(cli("strip " + q(data("tetra.off")) + " -o " + q(s / "o.ply") + " --engine").code, 2);
+    EXPECT_EQ(cli("strip " + q(test_data("tetra.off")) + " -o " + q(s / "o.ply") + " --engine").code, 2);
     EXPECT_EQ(s.count(), 0u);
 }
 
@@ -183,7 +181,7 @@ TEST(Cli, RenderStripsAnInputWithTheEngine) {
     EXPECT_EQ(cli("render builtin:genus2 -o " + q(s / "x.png") + " --engine slow").code, 2);
     EXPECT_EQ(cli("render builtin:genus2 -o " + q(s / "x.png") + " --engine growth --cycles c.json").code, 2);
     // Without --engine the input must be a strip result, as before.
-    EXPECT_EQ(cli("render " + q(data("tetra.off")) + " -o " + q(s / "x.png") + " --with-cycles").code, 2);
+    EXPECT_EQ(cli("render " + q(test_data("tetra.off")) + " -o " + q(s / "x.png") + " --with-cycles").code, 2);
     EXPECT_FALSE(fs::exists(s / "x.png"));
 }
 
@@ -191,42 +189,44 @@ TEST(Cli, InvalidInputLeavesNoOutput) {
     Scratch s("noout");
     for (const char* f : {"moebius.off", "non_manifold_edge.off", "repeated_vertex.off", "tetra_one_flipped.off"}) {
         SCOPED_TRACE(f);
-        CliRun r = cli("strip " + q(data(f)) + " -o " + q(s / "o.ply") + " --indices " + q(s / "i.txt") + " --report " + q(s / "r.json"));
+        CliRun r =
+            cli("strip " + q(test_data(f)) + " -o " + q(s / "o.ply") + " --indices " + q(s / "i.txt") + " --report " + q(s / "r.json"));
         EXPECT_EQ(r.code, 3) << r.out;
-        EXPECT_EQ(r.out.rfind("singlestrip: error: " + data(f) + ": ", 0), 0u) << r.out;
+        EXPECT_EQ(r.out.rfind("singlestrip: error: " + test_data(f) + ": ", 0), 0u) << r.out;
         EXPECT_EQ(s.count(), 0u);
     }
     // --orient repairs the flipped tetrahedron.
-    CliRun r = cli("strip --orient " + q(data("tetra_one_flipped.off")) + " -o " + q(s / "o.off"));
+    CliRun r = cli("strip --orient " + q(test_data("tetra_one_flipped.off")) + " -o " + q(s / "o.off"));
     EXPECT_EQ(r.code, 0) << r.out;
     EXPECT_TRUE(fs::exists(s / "o.off"));
 }
 
 TEST(Cli, RequestAndOutputErrors) {
     Scratch s("req");
-    CliRun ext = cli("strip " + q(data("tetra.off")) + " -o " + q(s / "o.xyz"));
+    CliRun ext = cli("strip " + q(test_data("tetra.off")) + " -o " + q(s / "o.xyz"));
     EXPECT_EQ(ext.code, 4) << ext.out;
-    CliRun seed = cli("strip " + q(data("tetra.off")) + " -o " + q(s / "o.ply") + " --seed-face 4");
+    CliRun seed = cli("strip " + q(test_data("tetra.off")) + " -o " + q(s / "o.ply") + " --seed-face 4");
     EXPECT_EQ(seed.code, 4) << seed.out;
-    CliRun cons = cli("strip " + q(data("tetra.off")) + " -o " + q(s / "o.ply") + " --constraints " + q(data("constraints_bad_token.txt")));
+    CliRun cons =
+        cli("strip " + q(test_data("tetra.off")) + " -o " + q(s / "o.ply") + " --constraints " + q(test_data("constraints_bad_token.txt")));
     EXPECT_EQ(cons.code, 3) << cons.out;
     EXPECT_NE(cons.out.find("line 2"), std::string::npos) << cons.out;
     EXPECT_EQ(s.count(), 0u);
     // The mesh is written but the report cannot be: nothing is left behind.
-    CliRun out = cli("strip " + q(data("tetra.off")) + " -o " + q(s / "o.ply") + " --report " + q(s / "no_dir/r.json"));
+    CliRun out = cli("strip " + q(test_data("tetra.off")) + " -o " + q(s / "o.ply") + " --report " + q(s / "no_dir/r.json"));
     EXPECT_EQ(out.code, 7) << out.out;
     EXPECT_EQ(s.count(), 0u);
 }
 
 TEST(Cli, VerifyCatchesATamperedOutput) {
     Scratch s("verify");
-    ASSERT_EQ(cli("strip " + q(data("pyramid_quad.off")) + " -o " + q(s / "o.off") + " --indices " + q(s / "i.txt")).code, 0);
-    EXPECT_EQ(cli("verify " + q(data("pyramid_quad.off")) + " " + q(s / "o.off") + " --indices " + q(s / "i.txt")).code, 0);
+    ASSERT_EQ(cli("strip " + q(test_data("pyramid_quad.off")) + " -o " + q(s / "o.off") + " --indices " + q(s / "i.txt")).code, 0);
+    EXPECT_EQ(cli("verify " + q(test_data("pyramid_quad.off")) + " " + q(s / "o.off") + " --indices " + q(s / "i.txt")).code, 0);
     // Drop the last face: the output no longer covers the input.
     singlestrip::TriangleSoup o = singlestrip::read_mesh_file(s / "o.off");
     o.triangles.pop_back();
     singlestrip::write_strip_mesh(s / "bad.off", o.points, o.triangles, std::vector<uint32_t>(o.triangles.size(), 0));
-    CliRun v = cli("verify " + q(data("pyramid_quad.off")) + " " + q(s / "bad.off"));
+    CliRun v = cli("verify " + q(test_data("pyramid_quad.off")) + " " + q(s / "bad.off"));
     EXPECT_EQ(v.code, 5) << v.out;
 }
 
@@ -294,7 +294,7 @@ TEST(Cli, UnweldedSoupHintsWeldAndOrientFollowsTheMajority) {
 
 TEST(Cli, GltfSceneInAndOut) {
     Scratch s("gltfin");
-    const std::string scene = data("scene.gltf");
+    const std::string scene = test_data("scene.gltf");
     CliRun r = cli("strip " + q(scene) + " -o " + q(s / "o.glb") + " --report " + q(s / "r.json"));
     ASSERT_EQ(r.code, 0) << r.out;
     EXPECT_NE(r.out.find("mesh 2 primitive 0: kept as it was"), std::string::npos) << r.out;
@@ -306,9 +306,9 @@ TEST(Cli, GltfSceneInAndOut) {
     EXPECT_EQ(sv.code, 0) << sv.out;
     EXPECT_NE(sv.out.find("8 strips"), std::string::npos) << sv.out;
     // Any other output: all triangle primitives as one mesh, verified like any input.
-    EXPECT_EQ(cli("info " + q(data("scene.glb"))).code, 0);
-    CliRun p = cli("strip " + q(data("scene.glb")) + " -o " + q(s / "o.ply") + " --indices " + q(s / "o.txt"));
+    EXPECT_EQ(cli("info " + q(test_data("scene.glb"))).code, 0);
+    CliRun p = cli("strip " + q(test_data("scene.glb")) + " -o " + q(s / "o.ply") + " --indices " + q(s / "o.txt"));
     ASSERT_EQ(p.code, 0) << p.out;
-    CliRun v = cli("verify " + q(data("scene.glb")) + " " + q(s / "o.ply") + " --indices " + q(s / "o.txt"));
+    CliRun v = cli("verify " + q(test_data("scene.glb")) + " " + q(s / "o.ply") + " --indices " + q(s / "o.txt"));
     EXPECT_EQ(v.code, 0) << v.out;
 }

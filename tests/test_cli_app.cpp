@@ -19,15 +19,13 @@
 namespace fs = std::filesystem;
 using json = nlohmann::json;
 
+using singlestrip::test::test_data;
+
 namespace {
 
 const std::string kSource = SINGLESTRIP_SOURCE_DIR;
 const std::string kRoom = kSource + "/examples/room/room.off";
 const std::string kWalls = kSource + "/examples/room/walls.txt";
-
-std::string data(const std::string& name) {
-    return kSource + "/tests/data/" + name;
-}
 
 std::string q(const std::string& s) {
     return singlestrip::test::shell_quote(s);
@@ -99,17 +97,17 @@ TEST(CliApp, OutputsThatOverwriteAreRefused) {
     EXPECT_FALSE(fs::exists(s / "w.ply"));
     EXPECT_EQ(cli("strip builtin:genus2 -o " + q(s / "w.ply") + " --indices " + q(s / "./w.ply")).code, 4);
 
-    fs::copy_file(data("tetra.off"), s / "tetra.off");
+    fs::copy_file(test_data("tetra.off"), s / "tetra.off");
     const std::string before = slurp(s / "tetra.off");
     const Exec input = cli("strip " + q(s / "tetra.off") + " -o " + q(s / "tetra.off"));
     EXPECT_EQ(input.code, 4) << input.out;
     EXPECT_TRUE(has(input, "would overwrite the input")) << input.out;
     EXPECT_EQ(slurp(s / "tetra.off"), before);
-    fs::copy_file(data("constraints_ok.txt"), s / "c.txt");
-    EXPECT_EQ(
-        cli("strip " + q(data("tetra.off")) + " -o " + q(s / "o.ply") + " --constraints " + q(s / "c.txt") + " --path " + q(s / "c.txt"))
-            .code,
-        4);
+    fs::copy_file(test_data("constraints_ok.txt"), s / "c.txt");
+    EXPECT_EQ(cli("strip " + q(test_data("tetra.off")) + " -o " + q(s / "o.ply") + " --constraints " + q(s / "c.txt") + " --path " +
+                  q(s / "c.txt"))
+                  .code,
+              4);
     // Batch: --out-dir next to the inputs with their own format would overwrite them.
     const Exec batch = cli("strip " + q(s / "tetra.off") + " --out-dir " + q(s.dir.string()) + " --format off");
     EXPECT_EQ(batch.code, 4) << batch.out;
@@ -117,21 +115,21 @@ TEST(CliApp, OutputsThatOverwriteAreRefused) {
 }
 
 TEST(CliApp, DashIsStandardInputAndOutput) {
-    const Exec obj = cli("strip - --input-format off -o - --format obj < " + q(data("tetra.off")), true);
+    const Exec obj = cli("strip - --input-format off -o - --format obj < " + q(test_data("tetra.off")), true);
     EXPECT_EQ(obj.code, 0);
     EXPECT_EQ(obj.out.rfind("# singlestrip", 0), 0u) << obj.out;
     EXPECT_TRUE(has(obj, "\nf ")) << obj.out;
-    const Exec need = cli("strip - -o x.ply < " + q(data("tetra.off")));
+    const Exec need = cli("strip - -o x.ply < " + q(test_data("tetra.off")));
     EXPECT_EQ(need.code, 4);
     EXPECT_TRUE(has(need, "needs --input-format")) << need.out;
-    const Exec info = cli("info - --input-format off < " + q(data("tetra.off")), true);
+    const Exec info = cli("info - --input-format off < " + q(test_data("tetra.off")), true);
     EXPECT_EQ(info.code, 0);
     EXPECT_TRUE(has(info, "valid for stripping:  yes")) << info.out;
     Scratch s("dash");
-    const Exec idx = cli("strip " + q(data("tetra.off")) + " -o " + q(s / "t.ply") + " --indices -", true);
+    const Exec idx = cli("strip " + q(test_data("tetra.off")) + " -o " + q(s / "t.ply") + " --indices -", true);
     EXPECT_EQ(idx.code, 0);
     EXPECT_FALSE(idx.out.empty());
-    EXPECT_EQ(cli("strip " + q(data("tetra.off")) + " -o - --indices -").code, 4);  // both to stdout
+    EXPECT_EQ(cli("strip " + q(test_data("tetra.off")) + " -o - --indices -").code, 4);  // both to stdout
 }
 
 TEST(CliApp, IndexBaseOne) {
@@ -205,11 +203,11 @@ TEST(CliApp, PathFiles) {
 TEST(CliApp, BatchNamesAndFormats) {
     Scratch s("batch");
     fs::create_directories(s / "b");
-    fs::copy_file(data("tetra.off"), s / "b/tetra.off");
-    const Exec r = cli("strip " + q(data("tetra.obj")) + " " + q(s / "b/tetra.off") + " " + q(data("moebius.off")) + " --out-dir " +
-                       q(s / "out") + " --format stl --with-path");
+    fs::copy_file(test_data("tetra.off"), s / "b/tetra.off");
+    const Exec r = cli("strip " + q(test_data("tetra.obj")) + " " + q(s / "b/tetra.off") + " " + q(test_data("moebius.off")) +
+                       " --out-dir " + q(s / "out") + " --format stl --with-path");
     EXPECT_EQ(r.code, 3) << r.out;  // moebius fails
-    EXPECT_TRUE(has(r, "has the same name as " + data("tetra.obj"))) << r.out;
+    EXPECT_TRUE(has(r, "has the same name as " + test_data("tetra.obj"))) << r.out;
     EXPECT_TRUE(has(r, (s / "out/tetra-2.stl"))) << r.out;
     const auto stl = slurp(s / "out/tetra.stl");
     ASSERT_GE(stl.size(), 84u);
@@ -223,8 +221,8 @@ TEST(CliApp, BatchNamesAndFormats) {
 
 TEST(CliApp, VerifyRefusesInexactResults) {
     Scratch s("verify");
-    ASSERT_EQ(cli("strip " + q(data("tetra.off")) + " -o " + q(s / "t.stl")).code, 0);
-    const Exec v = cli("verify " + q(data("tetra.off")) + " " + q(s / "t.stl"));
+    ASSERT_EQ(cli("strip " + q(test_data("tetra.off")) + " -o " + q(s / "t.stl")).code, 0);
+    const Exec v = cli("verify " + q(test_data("tetra.off")) + " " + q(s / "t.stl"));
     EXPECT_EQ(v.code, 4);
     EXPECT_TRUE(has(v, "float32")) << v.out;
 }

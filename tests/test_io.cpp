@@ -14,6 +14,7 @@
 #include <unistd.h>
 
 #include "cgal_data.hpp"
+#include "shell.hpp"
 #include "singlestrip/errors.hpp"
 #include "singlestrip/io.hpp"
 #include "singlestrip/validate.hpp"
@@ -21,11 +22,9 @@
 namespace fs = std::filesystem;
 using namespace singlestrip;
 
-namespace {
+using singlestrip::test::test_data;
 
-std::string data(const std::string& name) {
-    return std::string(SINGLESTRIP_SOURCE_DIR) + "/tests/data/" + name;
-}
+namespace {
 
 fs::path scratch_dir(const std::string& tag) {
     fs::path d = fs::temp_directory_path() / ("singlestrip-test-io-" + tag + "-" + std::to_string(::getpid()));
@@ -63,7 +62,7 @@ TEST(ReadMesh, TetraInEveryFormatKeepsOrderAndOrientation) {
     for (const auto& t : kTetraFaces) want.push_back(geometric(expected, t));
     for (const char* name : {"tetra.off", "tetra.obj", "tetra_ascii.ply", "tetra_binary.ply", "tetra_ascii.stl", "tetra_binary.stl"}) {
         SCOPED_TRACE(name);
-        TriangleSoup s = read_mesh_file(data(name));
+        TriangleSoup s = read_mesh_file(test_data(name));
         ASSERT_EQ(s.points.size(), 4u);
         ASSERT_EQ(s.triangles.size(), 4u);
         ASSERT_EQ(s.source_polygon.size(), 4u);
@@ -141,7 +140,7 @@ TEST(ReadMesh, BinaryStlWrittenInTestWeldsExactlyEqualCorners) {
 TEST(ReadMesh, PolygonsAreFanTriangulatedAndUnreferencedVerticesKept) {
     for (const char* name : {"pyramid_quad.off", "pyramid_slashes.obj"}) {
         SCOPED_TRACE(name);
-        TriangleSoup s = read_mesh_file(data(name));
+        TriangleSoup s = read_mesh_file(test_data(name));
         EXPECT_EQ(s.points.size(), 6u);  // vertex 5 is unused but kept
         ASSERT_EQ(s.triangles.size(), 6u);
         EXPECT_EQ(s.triangles[0], (Triangle{0, 3, 2}));
@@ -183,7 +182,7 @@ TEST(ReadMesh, BadInputsGivePreciseErrors) {
     };
     for (const auto& c : cases) {
         SCOPED_TRACE(c.file);
-        const std::string path = data(c.file);
+        const std::string path = test_data(c.file);
         const std::string msg = error_of(path);
         EXPECT_NE(msg.find(path), std::string::npos) << msg;
         for (const auto& n : c.needles) EXPECT_NE(msg.find(n), std::string::npos) << "missing '" << n << "' in: " << msg;
@@ -195,7 +194,7 @@ TEST(ReadMesh, DirectoryAndUnreadableFile) {
     fs::create_directories(dir / "mesh.off");
     EXPECT_NE(error_of((dir / "mesh.off").string()).find("is a directory"), std::string::npos);
     const fs::path locked = dir / "locked.off";
-    fs::copy_file(data("tetra.off"), locked);
+    fs::copy_file(test_data("tetra.off"), locked);
     fs::permissions(locked, fs::perms::none);
     if (::geteuid() != 0) {  // root can read anything
         const std::string msg = error_of(locked.string());
@@ -316,7 +315,7 @@ TEST(WriteMesh, IndicesAreSixteenPerLine) {
 }
 
 TEST(Constraints, PolylinesBecomeConsecutivePairs) {
-    const auto edges = read_constraints(data("constraints_ok.txt"), 4);
+    const auto edges = read_constraints(test_data("constraints_ok.txt"), 4);
     const std::vector<ConstraintEdge> want = {{0, 1, 2}, {1, 2, 2}, {3, 0, 4}};
     EXPECT_EQ(edges, want);
     const std::vector<std::pair<uint32_t, uint32_t>> want_pairs = {{0, 1}, {1, 2}, {3, 0}};
@@ -332,13 +331,13 @@ TEST(Constraints, ErrorsNameFileAndLine) {
         }
         return std::string("(no error)");
     };
-    std::string m = message(data("constraints_bad_token.txt"), 4);
+    std::string m = message(test_data("constraints_bad_token.txt"), 4);
     EXPECT_NE(m.find("constraints_bad_token.txt: line 2"), std::string::npos) << m;
     EXPECT_NE(m.find("'x'"), std::string::npos) << m;
-    m = message(data("constraints_out_of_range.txt"), 4);
+    m = message(test_data("constraints_out_of_range.txt"), 4);
     EXPECT_NE(m.find("line 3"), std::string::npos) << m;
     EXPECT_NE(m.find("vertex 4"), std::string::npos) << m;
-    m = message(data("nope.txt"), 4);
+    m = message(test_data("nope.txt"), 4);
     EXPECT_NE(m.find("nope.txt"), std::string::npos) << m;
 }
 

@@ -12,6 +12,7 @@
 #include <unistd.h>
 
 #include "fixtures.hpp"
+#include "shell.hpp"
 #include "singlestrip/encode.hpp"
 #include "singlestrip/errors.hpp"
 #include "singlestrip/pipeline.hpp"
@@ -19,13 +20,9 @@
 
 using namespace singlestrip;
 
-namespace {
+using singlestrip::test::test_data;
 
-std::string data(const std::string& name) {
-    return std::string(SINGLESTRIP_SOURCE_DIR) + "/tests/data/" + name;
-}
-
-}  // namespace
+namespace {}  // namespace
 
 TEST(Pipeline, EachEngineGivesOneConsistentStrip) {
     for (StripEngine engine : {StripEngine::Matching, StripEngine::Growth}) {
@@ -67,13 +64,13 @@ TEST(Pipeline, StageTellsWhereItStopped) {
 
 TEST(Pipeline, ConstraintFileIsReadCheckedAndCounted) {
     PipelineOptions o;
-    o.constraints_file = data("constraints_bad_token.txt");
+    o.constraints_file = test_data("constraints_bad_token.txt");
     PipelineStage stage = PipelineStage::Checks;
-    EXPECT_THROW(stripify(read_input(data("tetra.off")), o, &stage), InputError);
+    EXPECT_THROW(stripify(read_input(test_data("tetra.off")), o, &stage), InputError);
     EXPECT_EQ(stage, PipelineStage::Constraints);
 
-    o.constraints_file = data("constraints_ok.txt");  // 0-1, 1-2, 3-0: a path, not a cut
-    const PipelineResult r = stripify(read_input(data("tetra.off")), o);
+    o.constraints_file = test_data("constraints_ok.txt");  // 0-1, 1-2, 3-0: a path, not a cut
+    const PipelineResult r = stripify(read_input(test_data("tetra.off")), o);
     EXPECT_EQ(r.options.strip.constraint_edges.size(), 3u);
     ReportInput in;
     in.result = &r;
@@ -86,7 +83,7 @@ namespace {
 std::pair<std::string, PipelineStage> constraint_refusal(const PipelineOptions& o) {
     PipelineStage stage = PipelineStage::Checks;
     try {
-        stripify(read_input(data("tetra.off")), o, &stage);
+        stripify(read_input(test_data("tetra.off")), o, &stage);
     } catch (const RequestError& e) {
         return {e.what(), stage};
     }
@@ -113,7 +110,7 @@ TEST(Pipeline, ConstraintEdgesAreCheckedOnceAndNamedWhereTheUserWroteThem) {
               file + ": line 2: (3, 3) is not an edge of the mesh (vertex numbers counted from 0 here: add 1 for the file's numbering)");
 
     std::ofstream(file) << "\n2 3 4\n";  // 1-based: the pairs (1, 2) and (2, 3), both on line 2
-    const PipelineResult r = stripify(read_input(data("tetra.off")), o);
+    const PipelineResult r = stripify(read_input(test_data("tetra.off")), o);
     const std::vector<ConstraintEdge> want = {{0, 1, 0}, {1, 2, 2}, {2, 3, 2}};
     EXPECT_EQ(r.options.strip.constraint_edges, want);
     std::filesystem::remove(file);

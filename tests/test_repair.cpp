@@ -9,6 +9,7 @@
 
 #include "cgal_data.hpp"
 #include "fixtures.hpp"
+#include "shell.hpp"
 #include "singlestrip/encode.hpp"
 #include "singlestrip/errors.hpp"
 #include "singlestrip/io.hpp"
@@ -19,11 +20,9 @@
 
 using namespace singlestrip;
 
-namespace {
+using singlestrip::test::test_data;
 
-std::string data(const std::string& name) {
-    return std::string(SINGLESTRIP_SOURCE_DIR) + "/tests/data/" + name;
-}
+namespace {
 
 void flip(TriangleSoup& s, size_t f) {
     std::swap(s.triangles[f][1], s.triangles[f][2]);
@@ -75,7 +74,7 @@ TEST(Repair, EachBrokenTestFileStripsWithRepairAndVerifies) {
     for (const char* f : {"repeated_vertex.off", "duplicate_face.off", "non_manifold_edge.off", "non_manifold_vertex.off",
                           "tetra_one_flipped.off", "moebius.off", "two_components.off"}) {
         SCOPED_TRACE(f);
-        const TriangleSoup s = read_mesh_file(data(f));
+        const TriangleSoup s = read_mesh_file(test_data(f));
         const VerifyReport rep = strip_and_verify(s, repair_options());
         EXPECT_TRUE(rep.ok()) << rep.to_string();
     }
@@ -98,7 +97,7 @@ TEST(Repair, DropsDegenerateAndDuplicateFacesKeepingTheFirst) {
 
 TEST(Repair, CutsNonManifoldEdgesAndVerticesByCopyingVertices) {
     // Three fins on one edge, and two cones touching at a vertex.
-    const TriangleSoup fins = read_mesh_file(data("non_manifold_edge.off"));
+    const TriangleSoup fins = read_mesh_file(test_data("non_manifold_edge.off"));
     const RepairedSoup r = repair_soup(fins);
     EXPECT_EQ(r.report.non_manifold_edges.size(), 1u);
     EXPECT_FALSE(r.report.copied_from.empty());
@@ -106,7 +105,7 @@ TEST(Repair, CutsNonManifoldEdgesAndVerticesByCopyingVertices) {
     for (size_t j = 0; j < r.report.copied_from.size(); ++j)  // copies sit where their originals are
         EXPECT_EQ(r.soup.points[fins.points.size() + j], fins.points[r.report.copied_from[j]]);
     EXPECT_TRUE(diagnose_soup(r.soup).empty());
-    const TriangleSoup pinch = read_mesh_file(data("non_manifold_vertex.off"));
+    const TriangleSoup pinch = read_mesh_file(test_data("non_manifold_vertex.off"));
     const RepairedSoup p = repair_soup(pinch);
     EXPECT_EQ(p.report.split_vertices, (std::vector<uint32_t>{0}));
     EXPECT_TRUE(diagnose_soup(p.soup).empty());

@@ -11,6 +11,7 @@
 
 #include "cgal_data.hpp"
 #include "fixtures.hpp"
+#include "shell.hpp"
 #include "singlestrip/errors.hpp"
 #include "singlestrip/io.hpp"
 #include "singlestrip/mesh.hpp"
@@ -18,11 +19,9 @@
 
 using namespace singlestrip;
 
-namespace {
+using singlestrip::test::test_data;
 
-std::string data(const std::string& name) {
-    return std::string(SINGLESTRIP_SOURCE_DIR) + "/tests/data/" + name;
-}
+namespace {
 
 std::vector<std::string> kinds(const std::vector<SoupProblem>& ps) {
     std::vector<std::string> k;
@@ -94,7 +93,7 @@ TEST(Diagnose, ValidProceduralMeshesHaveNoProblemsAndRightTopology) {
 }
 
 TEST(Diagnose, EachStructuralProblemIsNamed) {
-    auto probs = [](const char* f) { return diagnose_soup(read_mesh_file(data(f))); };
+    auto probs = [](const char* f) { return diagnose_soup(read_mesh_file(test_data(f))); };
     EXPECT_TRUE(has(probs("repeated_vertex.off"), "repeated_vertex", {"face 4", "repeats a vertex"}));
     EXPECT_TRUE(has(probs("duplicate_face.off"), "duplicate_face", {"faces 3, 4", "duplicates"}));
     EXPECT_TRUE(has(probs("non_manifold_edge.off"), "non_manifold_edge", {"edge (0, 1)", "3 faces", "(0, 1, 2)"}));
@@ -104,7 +103,7 @@ TEST(Diagnose, EachStructuralProblemIsNamed) {
     EXPECT_TRUE(has(probs("tetra_one_flipped.off"), "inconsistent_orientation", {"edge (0, 2)", "faces 0 and 2"}));
     // Several components are not a problem (one strip each); mesh_info still counts them.
     EXPECT_TRUE(probs("two_components.off").empty());
-    const MeshInfo m = mesh_info(read_mesh_file(data("two_components.off")));
+    const MeshInfo m = mesh_info(read_mesh_file(test_data("two_components.off")));
     EXPECT_EQ(m.components, 3u);
     EXPECT_EQ(m.component_sizes, (std::vector<uint64_t>{4, 4, 1}));
 }
@@ -119,13 +118,13 @@ TEST(Diagnose, ErrorsNameTheOptionThatFixesThem) {
         {"moebius.off", "--repair cuts a non-orientable surface into an orientable piece"}};
     for (const auto& [file, hint] : cases) {
         SCOPED_TRACE(file);
-        const std::string msg = prepare_error(read_mesh_file(data(file)), file);
+        const std::string msg = prepare_error(read_mesh_file(test_data(file)), file);
         EXPECT_NE(msg.find(hint), std::string::npos) << msg;
     }
 }
 
 TEST(Diagnose, MoebiusIsNonOrientableAndOrientCannotFixIt) {
-    for (const TriangleSoup& s : {read_mesh_file(data("moebius.off")), make_moebius_soup(7)}) {
+    for (const TriangleSoup& s : {read_mesh_file(test_data("moebius.off")), make_moebius_soup(7)}) {
         const auto ps = diagnose_soup(s);
         EXPECT_TRUE(has(ps, "non_orientable", {"not orientable", "edge ("}));
         MeshInfo m = mesh_info(s);
@@ -180,7 +179,7 @@ TEST(Orient, NeverFlipsMostOfAComponent) {
 }
 
 TEST(Orient, OrientDoesNotHideOtherProblems) {
-    TriangleSoup s = read_mesh_file(data("duplicate_face.off"));
+    TriangleSoup s = read_mesh_file(test_data("duplicate_face.off"));
     flip(s, 0);
     const std::string msg = prepare_error(s, "dup.off", true);
     EXPECT_NE(msg.find("duplicates"), std::string::npos) << msg;

@@ -32,4 +32,11 @@ struct ScratchDir {
     std::filesystem::path dir;
 };
 
+#ifdef SINGLESTRIP_SOURCE_DIR
+/// The path of tests/data/<name> in the source tree (test executables define the source dir).
+inline std::string test_data(const std::string& name) {
+    return std::string(SINGLESTRIP_SOURCE_DIR) + "/tests/data/" + name;
+}
+#endif
+
 }  // namespace singlestrip::test
