@@ -137,6 +137,8 @@ public:
     [[nodiscard]] static HalfedgeId prev(HalfedgeId h) noexcept { return HalfedgeId(h.idx() % 3 == 0 ? h.idx() + 2 : h.idx() - 1); }
     /// Half-edge k (0, 1, 2) of face f, counter-clockwise.
     [[nodiscard]] static HalfedgeId halfedge(FaceId f, uint32_t k) noexcept { return HalfedgeId(3 * f.idx() + k); }
+    /// k of half-edge h in its face: halfedge(face(h), k) == h.
+    [[nodiscard]] static uint32_t index_in_face(HalfedgeId h) noexcept { return h.idx() % 3; }
     [[nodiscard]] VertexId from(HalfedgeId h) const noexcept { return VertexId(corner_vertex_[h.idx()]); }
     [[nodiscard]] VertexId to(HalfedgeId h) const noexcept { return from(next(h)); }
     /// Vertex opposite half-edge h in its face.

@@ -1,0 +1,41 @@
+// singlestrip — internal: a flat per-id array indexed by its id type (FaceId, HalfedgeId, ...),
+// so `used_[h]` says what it indexes and a face cannot index a half-edge array.
+#pragma once
+
+#include <cstddef>
+#include <utility>
+#include <vector>
+
+#include "singlestrip/mesh.hpp"
+
+namespace singlestrip {
+
+/// A std::vector<T> indexed by I (an Id<Tag>): element i.idx(). Unchecked, as std::vector's [].
+template <class I, class T>
+class IdVector {
+public:
+    IdVector() = default;
+    IdVector(size_t n, const T& value) : v_(n, value) {}
+    explicit IdVector(std::vector<T> v) noexcept : v_(std::move(v)) {}
+
+    [[nodiscard]] T& operator[](I i) noexcept { return v_[i.idx()]; }
+    [[nodiscard]] const T& operator[](I i) const noexcept { return v_[i.idx()]; }
+
+    [[nodiscard]] size_t size() const noexcept { return v_.size(); }
+    [[nodiscard]] bool empty() const noexcept { return v_.empty(); }
+    [[nodiscard]] size_t capacity() const noexcept { return v_.capacity(); }
+    void reserve(size_t n) { v_.reserve(n); }
+    void resize(size_t n) { v_.resize(n); }
+    void resize(size_t n, const T& value) { v_.resize(n, value); }
+    void assign(size_t n, const T& value) { v_.assign(n, value); }
+    void clear() noexcept { v_.clear(); }
+    void push_back(const T& value) { v_.push_back(value); }
+    void swap(IdVector& other) noexcept { v_.swap(other.v_); }
+    /// The plain array, for interfaces that take one.
+    [[nodiscard]] const std::vector<T>& plain() const noexcept { return v_; }
+
+private:
+    std::vector<T> v_;
+};
+
+}  // namespace singlestrip
