@@ -17,14 +17,14 @@ TEST(PathOrder, RandomOperationsMatchAVector) {
     for (int round = 0; round < 20; ++round) {
         const uint32_t n = 1 + rng() % 300;
         PathOrder order(n);
-        std::vector<uint32_t> ref, pending(n);
-        for (uint32_t i = 0; i < n; ++i) pending[i] = i;
+        std::vector<FaceId> ref, pending(n);
+        for (uint32_t i = 0; i < n; ++i) pending[i] = FaceId(i);
         std::shuffle(pending.begin(), pending.end(), rng);
         while (!pending.empty() || ref.size() < n) {
             const uint32_t op = rng() % 5;
             if (op <= 1 && !pending.empty()) {  // append or prepend a batch
                 const size_t k = 1 + rng() % std::min<size_t>(pending.size(), 9);
-                std::vector<uint32_t> batch(pending.end() - k, pending.end());
+                std::vector<FaceId> batch(pending.end() - k, pending.end());
                 pending.resize(pending.size() - k);
                 if (op == 0) {
                     order.append(batch);
@@ -42,7 +42,7 @@ TEST(PathOrder, RandomOperationsMatchAVector) {
                     order.reverse_back(k);
                     std::reverse(ref.begin() + k, ref.end());
                 } else {
-                    const uint32_t x = ref[rng() % ref.size()];
+                    const FaceId x = ref[rng() % ref.size()];
                     ASSERT_EQ(ref[order.position(x)], x);
                     const uint32_t p = rng() % ref.size();
                     ASSERT_EQ(order.at(p), ref[p]);

@@ -15,40 +15,32 @@
 
 namespace singlestrip::matching {
 
-std::vector<uint32_t> MatchingBuilder::loop_from(uint32_t cut) const {
-    std::vector<uint32_t> seq;
-    uint32_t in = cut, f = Mesh::face(HalfedgeId(cut)).idx();
+// The faces of a loop cut open at its crossed half-edge `cut`: from cut's face round to the face
+// across it.
+std::vector<FaceId> MatchingBuilder::loop_from(HalfedgeId cut) const {
+    std::vector<FaceId> seq;
+    HalfedgeId in = cut;
+    FaceId f = Mesh::face(cut);
     for (;;) {
         seq.push_back(f);
-        uint32_t out = kNone;
-        for (uint32_t h = 3 * f; h < 3 * f + 3; ++h)
+        HalfedgeId out = kNone;
+        for (HalfedgeId h : sides(f))
             if (used_[h] && h != in) out = h;
-        if (out == kNone || out == mesh_.twin(HalfedgeId(cut)).idx()) return seq;
-        in = mesh_.twin(HalfedgeId(out)).idx();
-        f = Mesh::face(HalfedgeId(in)).idx();
+        if (out == kNone || out == mesh_.twin(cut)) return seq;
+        in = mesh_.twin(out);
+        f = Mesh::face(in);
     }
 }
 
-// 1 if the GL strip needs a swap at crossed half-edge h: the turns in its two faces (the faces'
-// edges left uncrossed) pivot on the same endpoint of h. Path ends make no turn.
-int MatchingBuilder::swap_at(uint32_t h) const {
-    const uint32_t t = mesh_.twin(HalfedgeId(h)).idx();
-    const uint32_t f = Mesh::face(HalfedgeId(h)).idx(), g = Mesh::face(HalfedgeId(t)).idx();
-    if (hdeg(f) != 2 || hdeg(g) != 2) return 0;
-    const bool f_at_from = !used_[Mesh::prev(HalfedgeId(h)).idx()];  // f's uncrossed edge touches from(h)
-    const bool g_at_from = !used_[Mesh::next(HalfedgeId(t)).idx()];  // g's uncrossed edge touches to(t) = from(h)
-    return f_at_from == g_at_from;
-}
-
 // Swaps at the crossed edges of the given faces (each edge counted once).
-int MatchingBuilder::swaps_around(std::initializer_list<uint32_t> faces) const {
-    uint32_t seen[9];
+int MatchingBuilder::swaps_around(std::initializer_list<FaceId> faces) const {
+    HalfedgeId seen[9];
     uint32_t n = 0;
     int sum = 0;
-    for (uint32_t f : faces)
-        for (uint32_t h = 3 * f; h < 3 * f + 3; ++h) {
+    for (FaceId f : faces)
+        for (HalfedgeId h : sides(f)) {
             if (!used_[h]) continue;
-            const uint32_t key = std::min(h, mesh_.twin(HalfedgeId(h)).idx());
+            const HalfedgeId key = std::min(h, mesh_.twin(h));
             if (std::find(seen, seen + n, key) != seen + n) continue;
             seen[n++] = key;
             sum += swap_at(h);
@@ -59,15 +51,17 @@ int MatchingBuilder::swaps_around(std::initializer_list<uint32_t> faces) const {
 class PathGrower {
 public:
     PathGrower(MatchingBuilder& b, uint32_t loops) : b_(b), path_(b.mesh_.num_faces()), loops_(loops) {}
-    void run(uint32_t path_root);
+    void run(StructId path_root);
 
 private:
     struct Take {
-        uint32_t link = kNone, cut = kNone;  ///< link: a free edge of the end; cut: a link of the loop
-        int cost = 0;                        ///< swaps added
+        HalfedgeId link = kNone, cut = kNone;  ///< link: a free edge of the end; cut: a link of the loop
+        int cost = 0;                          ///< swaps added
     };
     struct Rotation {
-        uint32_t side, link, dropped, from;
+        uint32_t side;
+        HalfedgeId link, dropped;
+        uint32_t from;
     };
     // A split join adds two triangles (two GL indices) and often swaps around its four faces: a
     // loop is taken in while the turns changed cost fewer than 5 swaps (the best of 2, 3, 4, 5 and
@@ -78,15 +72,15 @@ private:
     MatchingBuilder& b_;
     PathOrder path_;
     uint32_t loops_;               ///< loops not yet in the path
-    uint32_t root_ = kNone;        ///< the path's structure id
-    uint32_t ends_[2] = {};        ///< front, back
+    StructId root_;                ///< the path's structure
+    FaceId ends_[2];               ///< front, back
     std::vector<Rotation> trial_;  ///< rotations since the last loop taken in
     int trial_cost_ = 0;           ///< swaps they added
 
-    void start(uint32_t path_root);
+    void start(StructId path_root);
     [[nodiscard]] Take best_take(uint32_t side);
     void take(uint32_t side, const Take& t);
-    void rotate(uint32_t side, uint32_t h);
+    void rotate(uint32_t side, HalfedgeId h);
     void reverse(uint32_t side, uint32_t from) { side ? path_.reverse_back(from) : path_.reverse_front(from); }
     void undo_trial();
     bool take_all();
@@ -94,17 +88,20 @@ private:
 
 // The path starts as the one path there is, else as the first loop cut open at its first
 // crossed edge.
-void PathGrower::start(uint32_t path_root) {
-    const uint32_t nf = b_.mesh_.num_faces();
+void PathGrower::start(StructId path_root) {
+    const Mesh& mesh = b_.mesh_;
     if (path_root != kNone) {
-        uint32_t end = kNone;
-        for (uint32_t f = 0; f < nf && end == kNone; ++f)
-            if (b_.find(b_.sid_[f]) == path_root && b_.hdeg(f) < 2) end = f;
-        std::vector<uint32_t> seq{end};
-        for (uint32_t prev = kNone, f = end;;) {
-            uint32_t next = kNone;
-            for (uint32_t h = 3 * f; h < 3 * f + 3; ++h)
-                if (b_.used_[h] && b_.mesh_.neighbor(HalfedgeId(h)).idx() != prev) next = b_.mesh_.neighbor(HalfedgeId(h)).idx();
+        FaceId end = kNone;
+        for (FaceId f : mesh.faces())
+            if (b_.find(b_.sid_[f]) == path_root && b_.hdeg(f) < 2) {
+                end = f;
+                break;
+            }
+        std::vector<FaceId> seq{end};
+        for (FaceId prev = kNone, f = end;;) {
+            FaceId next = kNone;
+            for (HalfedgeId h : sides(f))
+                if (b_.used_[h] && b_.across(h) != prev) next = b_.across(h);
             if (next == kNone) break;
             seq.push_back(next);
             prev = f, f = next;
@@ -115,29 +112,33 @@ void PathGrower::start(uint32_t path_root) {
         ends_[1] = seq.back();
         return;
     }
-    uint32_t cut = kNone;
-    for (uint32_t h = 0; cut == kNone; ++h)
-        if (b_.used_[h]) cut = h;
-    root_ = b_.find(b_.sid_[Mesh::face(HalfedgeId(cut)).idx()]);
+    HalfedgeId cut = kNone;
+    for (HalfedgeId h : mesh.halfedges())
+        if (b_.used_[h]) {
+            cut = h;
+            break;
+        }
+    root_ = b_.find(b_.sid_[Mesh::face(cut)]);
     path_.append(b_.loop_from(cut));
     b_.set_pair(b_.used_, cut, 0);
     b_.cycle_[root_] = 0;
-    ends_[0] = Mesh::face(HalfedgeId(cut)).idx();
-    ends_[1] = b_.mesh_.neighbor(HalfedgeId(cut)).idx();
+    ends_[0] = Mesh::face(cut);
+    ends_[1] = b_.across(cut);
     --loops_;
 }
 
 // The cheapest way to take a loop in at ends_[side]: link into its face g, cut one of g's links.
 PathGrower::Take PathGrower::best_take(uint32_t side) {
     Take best;
-    const uint32_t e = ends_[side];
-    for (uint32_t h = 3 * e; h < 3 * e + 3; ++h) {
+    const FaceId e = ends_[side];
+    for (HalfedgeId h : sides(e)) {
         if (!b_.passable(h) || b_.used_[h]) continue;
-        const uint32_t g = b_.mesh_.neighbor(HalfedgeId(h)).idx(), r = b_.find(b_.sid_[g]);
+        const FaceId g = b_.across(h);
+        const StructId r = b_.find(b_.sid_[g]);
         if (r == root_ || !b_.cycle_[r] || b_.pinned_[r]) continue;
-        for (uint32_t gc = 3 * g; gc < 3 * g + 3; ++gc) {
+        for (HalfedgeId gc : sides(g)) {
             if (!b_.used_[gc]) continue;
-            const uint32_t c = b_.mesh_.neighbor(HalfedgeId(gc)).idx();
+            const FaceId c = b_.across(gc);
             const int before = b_.swaps_around({e, g, c});
             b_.set_pair(b_.used_, gc, 0), b_.set_pair(b_.used_, h, 1);
             const int cost = b_.swaps_around({e, g, c}) - before;
@@ -149,8 +150,8 @@ PathGrower::Take PathGrower::best_take(uint32_t side) {
 }
 
 void PathGrower::take(uint32_t side, const Take& t) {
-    std::vector<uint32_t> seq = b_.loop_from(t.cut);
-    b_.uf_[b_.find(b_.sid_[Mesh::face(HalfedgeId(t.cut)).idx()])] = root_;
+    std::vector<FaceId> seq = b_.loop_from(t.cut);
+    b_.uf_[b_.find(b_.sid_[Mesh::face(t.cut)])] = root_;
     b_.set_pair(b_.used_, t.cut, 0);
     b_.set_pair(b_.used_, t.link, 1);
     side ? path_.append(seq) : path_.prepend(seq);
@@ -162,14 +163,15 @@ void PathGrower::take(uint32_t side, const Take& t) {
 }
 
 // h: a free edge of ends_[side] into face x of the path.
-void PathGrower::rotate(uint32_t side, uint32_t h) {
-    const uint32_t e = ends_[side], x = b_.mesh_.neighbor(HalfedgeId(h)).idx(), px = path_.position(x), n = path_.size();
+void PathGrower::rotate(uint32_t side, HalfedgeId h) {
+    const FaceId e = ends_[side], x = b_.across(h);
+    const uint32_t px = path_.position(x), n = path_.size();
     if (side ? px + 2 >= n : px < 2) return;  // x is the end's own neighbour
     const uint32_t from = side ? px + 1 : px;
-    const uint32_t y = path_.at(side ? px + 1 : px - 1);
-    uint32_t xy = kNone;
-    for (uint32_t k = 3 * x; k < 3 * x + 3; ++k)
-        if (b_.used_[k] && b_.mesh_.neighbor(HalfedgeId(k)).idx() == y) xy = k;
+    const FaceId y = path_.at(side ? px + 1 : px - 1);
+    HalfedgeId xy = kNone;
+    for (HalfedgeId k : sides(x))
+        if (b_.used_[k] && b_.across(k) == y) xy = k;
     const int before = b_.swaps_around({e, x, y});
     b_.set_pair(b_.used_, xy, 0);
     b_.set_pair(b_.used_, h, 1);
@@ -185,7 +187,7 @@ void PathGrower::undo_trial() {
         reverse(r.side, r.from);
         b_.set_pair(b_.used_, r.link, 0);
         b_.set_pair(b_.used_, r.dropped, 1);
-        ends_[r.side] = Mesh::face(HalfedgeId(r.link)).idx();
+        ends_[r.side] = Mesh::face(r.link);
     }
     trial_.clear();
     trial_cost_ = 0;
@@ -199,7 +201,7 @@ bool PathGrower::take_all() {
     return took;
 }
 
-void PathGrower::run(uint32_t path_root) {
+void PathGrower::run(StructId path_root) {
     start(path_root);
     const uint32_t nf = b_.mesh_.num_faces();
     uint64_t rng = 0x9e3779b97f4a7c15ULL, budget = 16ULL * nf, idle = 0;  // xorshift: reproducible
@@ -209,9 +211,10 @@ void PathGrower::run(uint32_t path_root) {
             continue;
         }
         rng ^= rng << 13, rng ^= rng >> 7, rng ^= rng << 17;
-        const uint32_t side = rng & 1, h = 3 * ends_[side] + (rng >> 1) % 3;
+        const uint32_t side = rng & 1, k = static_cast<uint32_t>((rng >> 1) % 3);
+        const HalfedgeId h = Mesh::halfedge(ends_[side], k);
         --budget, ++idle;
-        if (b_.passable(h) && !b_.used_[h] && b_.find(b_.sid_[b_.mesh_.neighbor(HalfedgeId(h)).idx()]) == root_) rotate(side, h);
+        if (b_.passable(h) && !b_.used_[h] && b_.find(b_.sid_[b_.across(h)]) == root_) rotate(side, h);
         if (trial_cost_ >= kSplitCost + 6) undo_trial();  // too far from the pattern: back to the last take
     }
     undo_trial();
@@ -219,8 +222,9 @@ void PathGrower::run(uint32_t path_root) {
 
 void MatchingBuilder::absorb_loops() {
     if (num_pins_ > 0 || mesh_.num_faces() < 2) return;
-    uint32_t loops = 0, path = kNone;
-    for (uint32_t s = 0; s < uf_.size(); ++s) {
+    uint32_t loops = 0;
+    StructId path = kNone;
+    for (StructId s : IdRange<StructId>(static_cast<uint32_t>(uf_.size()))) {
         if (find(s) != s) continue;
         if (cycle_[s]) {
             ++loops;

@@ -12,52 +12,52 @@
 namespace singlestrip::matching {
 
 namespace {
-constexpr uint32_t kOdd = 1, kEven = 2;  // tree labels
+constexpr uint8_t kOdd = 1, kEven = 2;  // tree labels
 }  // namespace
 
 // Faces of the matching graph: those wanting exactly one matched edge. Faces wanting two (pinned
 // faces of degree 3) are left out, and a search that meets one is not a proof.
-bool MatchingBuilder::in_blossom_graph(uint32_t f) const {
+bool MatchingBuilder::in_blossom_graph(FaceId f) const {
     return degree(f) + vlink_[f] == 3;
 }
 
-uint32_t MatchingBuilder::mate_edge(uint32_t f) const {
-    for (uint32_t h = 3 * f; h < 3 * f + 3; ++h)
+HalfedgeId MatchingBuilder::mate_edge(FaceId f) const {
+    for (HalfedgeId h : sides(f))
         if (matched_[h]) return h;
     return kNone;
 }
 
-uint32_t MatchingBuilder::blossom_base(uint32_t f) {
+FaceId MatchingBuilder::blossom_base(FaceId f) {
     while (bl_base_[f] != f) f = bl_base_[f] = bl_base_[bl_base_[f]];
     return f;
 }
 
 // First common base of a and b going up the tree (both even, in the same tree).
-uint32_t MatchingBuilder::blossom_lca(uint32_t a, uint32_t b) {
+FaceId MatchingBuilder::blossom_lca(FaceId a, FaceId b) {
     ++bl_mark_;
     for (;;) {
         a = blossom_base(a);
         bl_seen_[a] = bl_mark_;
-        const uint32_t m = mate_edge(a);
+        const HalfedgeId m = mate_edge(a);
         if (m == kNone) break;  // the root
-        a = face_of(bl_parent_[across(m)]);
+        a = Mesh::face(bl_parent_[across(m)]);
     }
     for (;;) {
         b = blossom_base(b);
         if (bl_seen_[b] == bl_mark_) return b;
-        b = face_of(bl_parent_[across(mate_edge(b))]);
+        b = Mesh::face(bl_parent_[across(mate_edge(b))]);
     }
 }
 
 // Walks from v up to base b, pointing parents along the cycle (into_v: a half-edge from the child
 // into v), listing the bases met, to be merged into b (union-find, so a contraction costs its
 // path only), and queueing the odd faces met, which are even inside the blossom.
-void MatchingBuilder::blossom_mark(uint32_t v, uint32_t b, uint32_t into_v) {
+void MatchingBuilder::blossom_mark(FaceId v, FaceId b, HalfedgeId into_v) {
     while (blossom_base(v) != b) {
-        const uint32_t u = across(mate_edge(v)), bv = blossom_base(v), bu = blossom_base(u);
+        const FaceId u = across(mate_edge(v)), bv = blossom_base(v), bu = blossom_base(u);
         bl_parent_[v] = into_v;
-        into_v = twin_of(bl_parent_[u]);
-        const uint32_t next = face_of(bl_parent_[u]);
+        into_v = mesh_.twin(bl_parent_[u]);
+        const FaceId next = Mesh::face(bl_parent_[u]);
         if (bl_label_[u] == kOdd) bl_label_[u] = kEven, bl_queue_.push_back(u);
         bl_merge_.push_back(bv);
         bl_merge_.push_back(bu);
@@ -67,25 +67,25 @@ void MatchingBuilder::blossom_mark(uint32_t v, uint32_t b, uint32_t into_v) {
 
 // The walks see the bases as they were (a walk passes through a sub-blossom to its base), so the
 // bases are merged after both.
-void MatchingBuilder::blossom_contract(uint32_t v, uint32_t to, uint32_t h) {
-    const uint32_t b = blossom_lca(v, to);
+void MatchingBuilder::blossom_contract(FaceId v, FaceId to, HalfedgeId h) {
+    const FaceId b = blossom_lca(v, to);
     bl_merge_.clear();
-    blossom_mark(v, b, twin_of(h));
+    blossom_mark(v, b, mesh_.twin(h));
     blossom_mark(to, b, h);
-    for (uint32_t x : bl_merge_) bl_base_[x] = b;
+    for (FaceId x : bl_merge_) bl_base_[x] = b;
 }
 
 // Flips the alternating path that ends at the exposed face `end`.
-void MatchingBuilder::blossom_augment(uint32_t end) {
-    for (uint32_t v = end; v != kNone;) {
-        const uint32_t h = bl_parent_[v], pv = face_of(h), old = mate_edge(pv);
+void MatchingBuilder::blossom_augment(FaceId end) {
+    for (FaceId v = end; v != kNone;) {
+        const HalfedgeId h = bl_parent_[v], old = mate_edge(Mesh::face(h));
         set_pair(matched_, h, 1);
         if (old != kNone) set_pair(matched_, old, 0);
-        v = old == kNone ? kNone : across(old);
+        v = old == kNone ? FaceId() : across(old);
     }
 }
 
-void MatchingBuilder::blossom_touch(uint32_t f) {
+void MatchingBuilder::blossom_touch(FaceId f) {
     if (bl_stamp_[f] == bl_search_) return;
     bl_stamp_[f] = bl_search_;
     bl_base_[f] = f;  // union-find parent: the blossom's base at the root
@@ -94,7 +94,7 @@ void MatchingBuilder::blossom_touch(uint32_t f) {
     bl_touched_.push_back(f);
 }
 
-MatchingBuilder::Search MatchingBuilder::blossom_search(uint32_t root, size_t budget) {
+MatchingBuilder::Search MatchingBuilder::blossom_search(FaceId root, size_t budget) {
     const uint32_t nf = mesh_.num_faces();
     if (bl_stamp_.size() != nf) {
         bl_stamp_.assign(nf, 0), bl_seen_.assign(nf, 0);
@@ -109,10 +109,10 @@ MatchingBuilder::Search MatchingBuilder::blossom_search(uint32_t root, size_t bu
     bool exact = true;
     for (size_t head = 0; head < bl_queue_.size(); ++head) {
         if (bl_touched_.size() > budget) return Search::Unknown;
-        const uint32_t v = bl_queue_[head];
-        for (uint32_t h = 3 * v; h < 3 * v + 3; ++h) {
+        const FaceId v = bl_queue_[head];
+        for (HalfedgeId h : sides(v)) {
             if (!passable(h) || matched_[h]) continue;
-            const uint32_t to = across(h);
+            const FaceId to = across(h);
             if (!in_blossom_graph(to)) {
                 exact = false;
                 continue;
@@ -124,14 +124,14 @@ MatchingBuilder::Search MatchingBuilder::blossom_search(uint32_t root, size_t bu
             } else if (bl_label_[to] == 0) {
                 bl_label_[to] = kOdd;
                 bl_parent_[to] = h;
-                const uint32_t m = mate_edge(to);
+                const HalfedgeId m = mate_edge(to);
                 if (m == kNone) {
                     blossom_augment(to);
                     quota_[root] = 0;
                     quota_[to] = 0;
                     return Search::Found;
                 }
-                const uint32_t w = across(m);
+                const FaceId w = across(m);
                 if (!in_blossom_graph(w)) {
                     exact = false;
                     continue;

@@ -14,12 +14,12 @@ namespace singlestrip::matching {
 // From a face across h, over faces with two passable edges (a forced chain), to the first other
 // face, which it returns (kNone past F steps: a chain closing on itself); `faces` counts the
 // chain. Pinned faces end a chain and are never split.
-uint32_t MatchingBuilder::chain_end(uint32_t h, uint32_t& faces) const {
+FaceId MatchingBuilder::chain_end(HalfedgeId h, uint32_t& faces) const {
     faces = 0;
-    for (uint32_t g = across(h); faces <= mesh_.num_faces(); g = across(h), ++faces) {
+    for (FaceId g = across(h); faces <= mesh_.num_faces(); g = across(h), ++faces) {
         if (degree(g) != 2 || vlink_[g]) return g;
-        const uint32_t in = twin_of(h);
-        for (uint32_t e = 3 * g; e < 3 * g + 3; ++e)
+        const HalfedgeId in = mesh_.twin(h);
+        for (HalfedgeId e : sides(g))
             if (e != in && passable(e)) h = e;
     }
     return kNone;
@@ -31,19 +31,20 @@ uint32_t MatchingBuilder::chain_end(uint32_t h, uint32_t& faces) const {
 // the short face at the far end. +2 triangles per chain face. (Splitting every other edge also
 // gives a perfect matching, but each split leaves a ring of four whose two exits are matched: a
 // loop of its own, and its join costs the split saved.)
-void MatchingBuilder::split_chain(uint32_t h, uint32_t faces, std::vector<uint32_t>* wanting) {
+void MatchingBuilder::split_chain(HalfedgeId h, uint32_t faces, std::vector<FaceId>* wanting) {
     for (uint32_t i = 0; i < faces; ++i) {
-        const uint32_t g = across(h), in = twin_of(h);
-        uint32_t next = kNone;
-        for (uint32_t e = 3 * g; e < 3 * g + 3; ++e)
+        const FaceId g = across(h);
+        const HalfedgeId in = mesh_.twin(h);
+        FaceId next = kNone;
+        for (HalfedgeId e : sides(g))
             if (e != in && passable(e)) next = across(e);
         const SplitResult sr = split(h);
         requota(sr);
         if (wanting)
-            for (uint32_t c : {sr.f_a.idx(), sr.f_b.idx(), sr.g_a.idx(), sr.g_b.idx()})
+            for (FaceId c : {sr.f_a, sr.f_b, sr.g_a, sr.g_b})
                 if (quota_[c] > 0) wanting->push_back(c);
-        for (uint32_t c : {sr.g_a.idx(), sr.g_b.idx()})
-            for (uint32_t e = 3 * c; e < 3 * c + 3; ++e)
+        for (FaceId c : {sr.g_a, sr.g_b})
+            for (HalfedgeId e : sides(c))
                 if (passable(e) && across(e) == next) h = e;
     }
 }
@@ -51,22 +52,24 @@ void MatchingBuilder::split_chain(uint32_t h, uint32_t faces, std::vector<uint32
 // Faces still short whose neighbours start forced chains (junctions of one-face-wide
 // corridors: no 2-factor, and no split beside one face helps, by parity) are paired along the
 // shortest chains first, and each pair's chain is split (split_chain). False if none paired.
-bool MatchingBuilder::split_along_chains(const std::vector<uint32_t>& short_faces) {
+bool MatchingBuilder::split_along_chains(const std::vector<FaceId>& short_faces) {
     struct Candidate {
-        uint32_t faces, u, w, h;
+        uint32_t faces;
+        FaceId u, w;
+        HalfedgeId h;
     };
     std::vector<Candidate> found;
-    for (uint32_t u : short_faces) {
+    for (FaceId u : short_faces) {
         if (quota_[u] == 0 || vlink_[u]) continue;
-        for (uint32_t h = 3 * u; h < 3 * u + 3; ++h) {
+        for (HalfedgeId h : sides(u)) {
             if (!passable(h) || matched_[h]) continue;
             uint32_t faces = 0;
-            const uint32_t w = chain_end(h, faces);
+            const FaceId w = chain_end(h, faces);
             if (w != kNone && w != u && quota_[w] > 0 && !vlink_[w] && faces > 0 && u < w) found.push_back({faces, u, w, h});
         }
     }
     std::stable_sort(found.begin(), found.end(), [](const Candidate& a, const Candidate& b) { return a.faces < b.faces; });
-    std::vector<uint8_t> paired(mesh_.num_faces(), 0);
+    IdVector<FaceId, uint8_t> paired(mesh_.num_faces(), 0);
     std::vector<Candidate> chosen;
     for (const Candidate& c : found) {
         if (paired[c.u] || paired[c.w]) continue;
@@ -76,7 +79,7 @@ bool MatchingBuilder::split_along_chains(const std::vector<uint32_t>& short_face
     // Two faces left short become the strip's two ends (settle_leftovers()): without pins, the
     // longest chain is left unsplit when it would pair the last two.
     size_t left = 0;
-    for (uint32_t u : short_faces) left += quota_[u] > 0 && !paired[u];
+    for (FaceId u : short_faces) left += quota_[u] > 0 && !paired[u];
     if (left == 0 && num_pins_ == 0 && !chosen.empty()) chosen.pop_back();
     // Only chain faces and the near end are split, so the other chosen chains stay as found.
     for (const Candidate& c : chosen) split_chain(c.h, c.faces, nullptr);
@@ -89,31 +92,30 @@ bool MatchingBuilder::split_along_chains(const std::vector<uint32_t>& short_face
 // first (each costs two triangles), within `budget` outer faces; no blossoms (a heuristic: what
 // it misses goes to the fallback). Applying it unmatches each y from its mate and then matches
 // or splits (split_chain) each step; the faces the splits leave wanting are matched locally.
-bool MatchingBuilder::augment_through_chains(uint32_t u, size_t budget) {
-    const uint32_t nf = mesh_.num_faces();
-    ch_stamp_.resize(nf, 0);
+bool MatchingBuilder::augment_through_chains(FaceId u, size_t budget) {
+    ch_stamp_.resize(mesh_.num_faces(), 0);
     ++ch_mark_;
     std::vector<ChainStep> steps;
-    using Entry = std::pair<uint32_t, uint32_t>;  // (chain faces so far, step index or kNone for u)
+    using Entry = std::pair<uint32_t, StepId>;  // (chain faces so far, step, kNone for u)
     std::priority_queue<Entry, std::vector<Entry>, std::greater<>> queue;
     queue.push({0, kNone});
     ch_stamp_[u] = ch_mark_;
     for (size_t popped = 0; !queue.empty() && popped < budget; ++popped) {
         const auto [cost, at] = queue.top();
         queue.pop();
-        const uint32_t x = at == kNone ? u : mate_of(steps[at].y);
-        if (at != kNone && quota_[steps[at].y] > 0) return apply_chain_path(steps, at), true;
-        for (uint32_t h = 3 * x; h < 3 * x + 3; ++h) {
+        const FaceId x = at == kNone ? u : mate_of(steps[at.idx()].y);
+        if (at != kNone && quota_[steps[at.idx()].y] > 0) return apply_chain_path(steps, at), true;
+        for (HalfedgeId h : sides(x)) {
             if (!passable(h) || matched_[h]) continue;
             uint32_t faces = 0;
-            const uint32_t y = chain_end(h, faces);
+            const FaceId y = chain_end(h, faces);
             if (y == kNone || vlink_[y] || ch_stamp_[y] == ch_mark_) continue;
             const bool end = quota_[y] > 0;
             if (!end && (mate_of(y) == kNone || ch_stamp_[mate_of(y)] == ch_mark_)) continue;
             ch_stamp_[y] = ch_mark_;
             if (!end) ch_stamp_[mate_of(y)] = ch_mark_;
             steps.push_back({at, h, faces, y});
-            queue.push({cost + faces, static_cast<uint32_t>(steps.size() - 1)});
+            queue.push({cost + faces, StepId(static_cast<uint32_t>(steps.size() - 1))});
         }
     }
     return false;
@@ -121,13 +123,13 @@ bool MatchingBuilder::augment_through_chains(uint32_t u, size_t budget) {
 
 // Short faces that no chain joins to another short face directly: alternating paths through
 // chains, until two are left (the strip's ends; none with pins).
-bool MatchingBuilder::augment_all_through_chains(const std::vector<uint32_t>& short_faces) {
+bool MatchingBuilder::augment_all_through_chains(const std::vector<FaceId>& short_faces) {
     size_t left = 0;
-    for (uint32_t u : short_faces) left += quota_[u];
+    for (FaceId u : short_faces) left += quota_[u];
     const size_t keep = num_pins_ == 0 ? 2 : 0;
     const size_t budget = std::max<size_t>(1024, 16 * size_t{mesh_.num_faces()} / std::max<size_t>(1, short_faces.size()));
     bool any = false;
-    for (uint32_t u : short_faces) {
+    for (FaceId u : short_faces) {
         if (left <= keep) break;
         if (quota_[u] == 0 || vlink_[u] || !augment_through_chains(u, budget)) continue;
         any = true;
@@ -137,44 +139,45 @@ bool MatchingBuilder::augment_all_through_chains(const std::vector<uint32_t>& sh
 }
 
 // The face matched to y (kNone if y has no matched edge).
-uint32_t MatchingBuilder::mate_of(uint32_t y) const {
-    for (uint32_t e = 3 * y; e < 3 * y + 3; ++e)
+FaceId MatchingBuilder::mate_of(FaceId y) const {
+    for (HalfedgeId e : sides(y))
         if (matched_[e]) return across(e);
     return kNone;
 }
 
-void MatchingBuilder::apply_chain_path(const std::vector<ChainStep>& steps, uint32_t last) {
-    std::vector<uint32_t> path;
-    for (uint32_t s = last; s != kNone; s = steps[s].prev) path.push_back(s);
+void MatchingBuilder::apply_chain_path(const std::vector<ChainStep>& steps, StepId last) {
+    std::vector<StepId> path;
+    for (StepId s = last; s != kNone; s = steps[s.idx()].prev) path.push_back(s);
     // Every y but the last gives up its matched edge: it and its mate want one again.
-    for (uint32_t s : path) {
-        const uint32_t y = steps[s].y;
+    for (StepId s : path) {
+        const FaceId y = steps[s.idx()].y;
         if (s == last) continue;
-        for (uint32_t e = 3 * y; e < 3 * y + 3; ++e)
+        for (HalfedgeId e : sides(y))
             if (matched_[e]) {
                 ++quota_[y];
                 ++quota_[across(e)];
                 set_pair(matched_, e, 0);
             }
     }
-    std::vector<uint32_t> wanting;
-    for (uint32_t s : path) {
-        const ChainStep& st = steps[s];
+    std::vector<FaceId> wanting;
+    for (StepId s : path) {
+        const ChainStep& st = steps[s.idx()];
         if (st.faces > 0) {
             split_chain(st.h, st.faces, &wanting);
             wanting.push_back(st.y);
             continue;
         }
         set_pair(matched_, st.h, 1);
-        --quota_[face_of(st.h)];
+        --quota_[Mesh::face(st.h)];
         --quota_[st.y];
     }
-    std::vector<uint32_t> stamp(mesh_.num_faces(), 0);
-    aug_prev_.resize(mesh_.num_faces());
-    aug_matched_.resize(mesh_.num_faces());
-    aug_unmatched_.resize(mesh_.num_faces());
+    const uint32_t nf = mesh_.num_faces();
+    IdVector<FaceId, uint32_t> stamp(nf, 0);
+    aug_prev_.resize(nf);
+    aug_matched_.resize(nf);
+    aug_unmatched_.resize(nf);
     uint32_t mark = 0;
-    for (uint32_t f : wanting)
+    for (FaceId f : wanting)
         while (quota_[f] > 0 && augment_from(f, stamp, ++mark, 64)) {
         }
 }

@@ -10,29 +10,28 @@ namespace singlestrip::matching {
 
 // Loops and paths: components of the crossed edges, the virtual face joining the pinned faces.
 void MatchingBuilder::label_structures() {
-    const uint32_t nf = mesh_.num_faces();
-    sid_.assign(nf, kNone);
+    sid_.assign(mesh_.num_faces(), kNone);
     uf_.clear();
     cycle_.clear();
     pinned_.clear();
-    std::vector<uint32_t> stack;
-    for (uint32_t s = 0; s < nf; ++s) {
+    std::vector<FaceId> stack;
+    for (FaceId s : mesh_.faces()) {
         if (sid_[s] != kNone) continue;
-        const uint32_t id = static_cast<uint32_t>(uf_.size());
+        const StructId id(static_cast<uint32_t>(uf_.size()));
         bool ends = false, pinned = false;
         stack.assign(1, s);
         sid_[s] = id;
         while (!stack.empty()) {
-            const uint32_t f = stack.back();
+            const FaceId f = stack.back();
             stack.pop_back();
             ends |= hdeg(f) < 2;
-            auto visit = [&](uint32_t g) {
+            auto visit = [&](FaceId g) {
                 if (sid_[g] != kNone) return;
                 sid_[g] = id;
                 stack.push_back(g);
             };
-            for (uint32_t k = 0; k < 3; ++k)
-                if (used_[3 * f + k]) visit(mesh_.neighbor(HalfedgeId(3 * f + k)).idx());
+            for (HalfedgeId h : sides(f))
+                if (used_[h]) visit(across(h));
             if (vlink_[f]) {
                 pinned = true;
                 for (uint32_t i = 0; i < num_pins_; ++i) visit(pins_[i]);
@@ -47,14 +46,14 @@ void MatchingBuilder::label_structures() {
 
 // Walking loop from face `from` away from face `back`: true if `good` comes before `bad`
 // (within a bound; false past it).
-bool MatchingBuilder::meets_first(uint32_t from, uint32_t back, uint32_t good, uint32_t bad) const {
-    uint32_t prev = back, cur = from;
+bool MatchingBuilder::meets_first(FaceId from, FaceId back, FaceId good, FaceId bad) const {
+    FaceId prev = back, cur = from;
     for (uint32_t step = 0; step < 256; ++step) {
         if (cur == good) return true;
         if (cur == bad) return false;
-        uint32_t next = kNone;
-        for (uint32_t h = 3 * cur; h < 3 * cur + 3; ++h)
-            if (used_[h] && mesh_.neighbor(HalfedgeId(h)).idx() != prev) next = mesh_.neighbor(HalfedgeId(h)).idx();
+        FaceId next = kNone;
+        for (HalfedgeId h : sides(cur))
+            if (used_[h] && across(h) != prev) next = across(h);
         if (next == kNone) return false;
         prev = cur;
         cur = next;
@@ -68,68 +67,68 @@ bool MatchingBuilder::meets_first(uint32_t from, uint32_t back, uint32_t good, u
 // one. A loop met twice, at crossed edges p then q (tail t, head h), stays joined only if its arc
 // from h_p away from t_p reaches h_q before t_q (else it splits off again): checked by walking
 // it. Depth-first from f1 through at most kMaxLoops crossed edges, at most one loop met twice.
-bool MatchingBuilder::flip_alternating(uint32_t f1) {
+bool MatchingBuilder::flip_alternating(FaceId f1) {
     constexpr uint32_t kMaxLoops = 4;
     if (vlink_[f1]) return false;
-    uint32_t m1 = kNone;  // f1's matched edge closes the cycle
-    for (uint32_t h = 3 * f1; h < 3 * f1 + 3; ++h)
+    HalfedgeId m1 = kNone;  // f1's matched edge closes the cycle
+    for (HalfedgeId h : sides(f1))
         if (matched_[h]) m1 = h;
     if (m1 == kNone) return false;
-    const uint32_t close_face = mesh_.neighbor(HalfedgeId(m1)).idx();
+    const FaceId close_face = across(m1);
     if (find(sid_[close_face]) == find(sid_[f1])) return false;  // cheap filter: rarely joins loops
-    uint32_t path[2 * kMaxLoops];                                // crossed edge, then matched edge, in turn
-    uint32_t roots[kMaxLoops];
-    uint32_t rep_p = kNone, rep_q = kNone;  // depths of the two crossed edges of a loop met twice
+    HalfedgeId path[2 * kMaxLoops];                              // crossed edge, then matched edge, in turn
+    StructId roots[kMaxLoops];
+    bool repeated = false;  // a loop met twice, at the crossed edges of depths rep_p and rep_q
+    uint32_t rep_p = 0, rep_q = 0;
     auto faces_distinct = [&](uint32_t depth) {
-        uint32_t faces[2 * kMaxLoops];
-        for (uint32_t i = 0; i <= depth; ++i)
-            faces[2 * i] = Mesh::face(HalfedgeId(path[2 * i])).idx(), faces[2 * i + 1] = mesh_.neighbor(HalfedgeId(path[2 * i])).idx();
+        FaceId faces[2 * kMaxLoops];
+        for (uint32_t i = 0; i <= depth; ++i) faces[2 * i] = Mesh::face(path[2 * i]), faces[2 * i + 1] = across(path[2 * i]);
         for (uint32_t i = 0; i < 2 * depth + 2; ++i)
             for (uint32_t j = 0; j < i; ++j)
                 if (faces[i] == faces[j]) return false;
         return true;
     };
     auto closes_one_loop = [&](uint32_t depth) {
-        if (rep_p == kNone) return true;
+        if (!repeated) return true;
         if (!faces_distinct(depth)) return false;
-        const uint32_t up = path[2 * rep_p], uq = path[2 * rep_q];
-        return meets_first(mesh_.neighbor(HalfedgeId(up)).idx(), Mesh::face(HalfedgeId(up)).idx(), mesh_.neighbor(HalfedgeId(uq)).idx(),
-                           Mesh::face(HalfedgeId(uq)).idx());
+        const HalfedgeId up = path[2 * rep_p], uq = path[2 * rep_q];
+        return meets_first(across(up), Mesh::face(up), across(uq), Mesh::face(uq));
     };
     // Returns true once a cycle is flipped. `f` is the face at which a crossed edge is taken.
-    auto search = [&](auto&& self, uint32_t f, uint32_t depth) -> bool {
-        const uint32_t r = find(sid_[f]);
+    auto search = [&](auto&& self, FaceId f, uint32_t depth) -> bool {
+        const StructId r = find(sid_[f]);
         if (!cycle_[r] || pinned_[r] || vlink_[f]) return false;
         bool repeat = false;
         for (uint32_t i = 0; i < depth; ++i)
             if (roots[i] == r) {
-                if (rep_p != kNone) return false;
-                rep_p = i, rep_q = depth, repeat = true;
+                if (repeated) return false;
+                rep_p = i, rep_q = depth, repeat = repeated = true;
             }
         roots[depth] = r;
         bool found = false;
-        for (uint32_t h = 3 * f; h < 3 * f + 3 && !found; ++h) {
+        for (uint32_t k = 0; k < 3 && !found; ++k) {
+            const HalfedgeId h = Mesh::halfedge(f, k);
             if (!used_[h]) continue;
-            const uint32_t g = mesh_.neighbor(HalfedgeId(h)).idx();
-            uint32_t m = kNone;
-            for (uint32_t e = 3 * g; e < 3 * g + 3; ++e)
+            const FaceId g = across(h);
+            HalfedgeId m = kNone;
+            for (HalfedgeId e : sides(g))
                 if (matched_[e]) m = e;
             if (m == kNone || vlink_[g]) continue;
             path[2 * depth] = h;
             path[2 * depth + 1] = m;
-            if (g == close_face && mesh_.twin(HalfedgeId(m)).idx() == m1 && depth > 0 && closes_one_loop(depth)) {
+            if (g == close_face && mesh_.twin(m) == m1 && depth > 0 && closes_one_loop(depth)) {
                 for (uint32_t i = 0; i <= 2 * depth + 1; ++i) {
                     set_pair(used_, path[i], !used_[path[i]]);
                     set_pair(matched_, path[i], !matched_[path[i]]);
-                    flipped_faces_.push_back(face_of(path[i]));
+                    flipped_faces_.push_back(Mesh::face(path[i]));
                 }
                 for (uint32_t i = 1; i <= depth; ++i) uf_[find(roots[i])] = find(roots[0]);
                 found = true;
             } else if (depth + 1 < kMaxLoops && g != close_face) {
-                found = self(self, mesh_.neighbor(HalfedgeId(m)).idx(), depth + 1);
+                found = self(self, across(m), depth + 1);
             }
         }
-        if (repeat) rep_p = rep_q = kNone;
+        if (repeat) repeated = false;
         return found;
     };
     return search(search, f1, 0);
@@ -139,24 +138,23 @@ bool MatchingBuilder::flip_alternating(uint32_t f1) {
 // A flip can enable another, near the faces it changed: later passes look only there (on the
 // libcgal-demo meshes, whole-mesh passes after the first never found one).
 void MatchingBuilder::reduce_loops() {
-    const uint32_t nf = mesh_.num_faces();
-    std::vector<uint32_t> stamp(nf, 0), todo;
+    IdVector<FaceId, uint32_t> stamp(mesh_.num_faces(), 0);
+    std::vector<FaceId> todo;
     flipped_faces_.clear();
-    for (uint32_t f = 0; f < nf; ++f) stats_.ring_flips += flip_alternating(f);
+    for (FaceId f : mesh_.faces()) stats_.ring_flips += flip_alternating(f);
     for (uint32_t pass = 1; pass < 4 && !flipped_faces_.empty(); ++pass) {
         todo.clear();
-        for (uint32_t f : flipped_faces_)
-            for (uint32_t h = 3 * f; h < 3 * f + 3; ++h)
-                for (uint32_t g : {f, mesh_.is_boundary(HalfedgeId(h)) ? f : across(h)})
+        for (FaceId f : flipped_faces_)
+            for (HalfedgeId h : sides(f))
+                for (FaceId g : {f, mesh_.is_boundary(h) ? f : across(h)})
                     if (stamp[g] != pass) stamp[g] = pass, todo.push_back(g);
         flipped_faces_.clear();
-        for (uint32_t f : todo) stats_.ring_flips += flip_alternating(f);
+        for (FaceId f : todo) stats_.ring_flips += flip_alternating(f);
     }
 }
 
-// The faces of a loop cut open at its crossed half-edge `cut`: from cut's face round to the face
-// across it.
-void MatchingBuilder::join(uint32_t h, uint32_t a, uint32_t b, bool cycle, bool pinned) {
+// Loop or path b joins a across h (now crossed): the union's root is a.
+void MatchingBuilder::join(HalfedgeId h, StructId a, StructId b, bool cycle, bool pinned) {
     set_pair(used_, h, 1);
     uf_[b] = a;
     cycle_[a] = cycle;
@@ -164,11 +162,10 @@ void MatchingBuilder::join(uint32_t h, uint32_t a, uint32_t b, bool cycle, bool 
 }
 
 // Path end across h joins loop a for free: the loop opens at h's face (one crossed edge dropped).
-void MatchingBuilder::rotate_into(uint32_t h, uint32_t a, uint32_t b) {
-    const uint32_t f = Mesh::face(HalfedgeId(h)).idx();
-    for (uint32_t k = 0; k < 3; ++k)
-        if (used_[3 * f + k]) {
-            set_pair(used_, 3 * f + k, 0);
+void MatchingBuilder::rotate_into(HalfedgeId h, StructId a, StructId b) {
+    for (HalfedgeId e : sides(Mesh::face(h)))
+        if (used_[e]) {
+            set_pair(used_, e, 0);
             break;
         }
     join(h, a, b, false, pinned_[b]);
@@ -177,8 +174,8 @@ void MatchingBuilder::rotate_into(uint32_t h, uint32_t a, uint32_t b) {
 // Loop a (h's face f crosses its two other edges) joins b (g = the face across h) by one
 // midpoint split of h: f_a-g_a and f_b-g_b become crossed, f's and g's outer edges stay as they
 // were. A loop joined to a loop stays a loop; to a path (g inside, at an end, or alone), a path.
-void MatchingBuilder::merge_by_split(uint32_t h, uint32_t a, uint32_t b) {
-    const uint32_t t = mesh_.twin(HalfedgeId(h)).idx();
+void MatchingBuilder::merge_by_split(HalfedgeId h, StructId a, StructId b) {
+    const HalfedgeId t = mesh_.twin(h);
     split(h);
     set_pair(used_, h, 1);  // f_a - g_a
     set_pair(used_, t, 1);  // g_b - f_b
@@ -187,9 +184,9 @@ void MatchingBuilder::merge_by_split(uint32_t h, uint32_t a, uint32_t b) {
     pinned_[a] = pinned_[a] || pinned_[b];
 }
 
-bool MatchingBuilder::try_merge(uint32_t h, bool allow_split) {
-    const uint32_t f = Mesh::face(HalfedgeId(h)).idx(), g = mesh_.neighbor(HalfedgeId(h)).idx();
-    const uint32_t a = find(sid_[f]), b = find(sid_[g]);
+bool MatchingBuilder::try_merge(HalfedgeId h, bool allow_split) {
+    const FaceId f = Mesh::face(h), g = across(h);
+    const StructId a = find(sid_[f]), b = find(sid_[g]);
     const bool fe = hdeg(f) < 2, ge = hdeg(g) < 2;
     if (a == b) {
         if (cycle_[a] || !fe || !ge || f == g) return false;
@@ -199,21 +196,20 @@ bool MatchingBuilder::try_merge(uint32_t h, bool allow_split) {
     }
     if (fe && ge) return join(h, a, b, false, pinned_[a] || pinned_[b]), true;
     if (cycle_[a] && !pinned_[a] && ge) return rotate_into(h, a, b), true;
-    if (cycle_[b] && !pinned_[b] && fe) return rotate_into(mesh_.twin(HalfedgeId(h)).idx(), b, a), true;
+    if (cycle_[b] && !pinned_[b] && fe) return rotate_into(mesh_.twin(h), b, a), true;
     if (!allow_split || vlink_[f] || vlink_[g]) return false;
     if (cycle_[a] && !(pinned_[a] && !cycle_[b])) return merge_by_split(h, a, b), true;
-    if (cycle_[b] && !(pinned_[b] && !cycle_[a])) return merge_by_split(mesh_.twin(HalfedgeId(h)).idx(), b, a), true;
+    if (cycle_[b] && !(pinned_[b] && !cycle_[a])) return merge_by_split(mesh_.twin(h), b, a), true;
     return false;
 }
 
 // Swaps a split join of h adds. Each child pivots on its endpoint of h, so both cross edges swap
 // and each crossed outer edge of f and g changes state: 2 + 4 - 2 * (outer swaps), -2 to 6.
-int MatchingBuilder::split_join_cost(uint32_t h) const {
-    const uint32_t t = mesh_.twin(HalfedgeId(h)).idx();
+int MatchingBuilder::split_join_cost(HalfedgeId h) const {
+    const HalfedgeId t = mesh_.twin(h);
     int cost = 2;
-    for (uint32_t e : {Mesh::next(HalfedgeId(h)).idx(), Mesh::prev(HalfedgeId(h)).idx(), Mesh::next(HalfedgeId(t)).idx(),
-                       Mesh::prev(HalfedgeId(t)).idx()})
-        if (used_[e] && hdeg(face_of(e)) == 2 && hdeg(across(e)) == 2) cost += 1 - 2 * swap_at(e);
+    for (HalfedgeId e : {Mesh::next(h), Mesh::prev(h), Mesh::next(t), Mesh::prev(t)})
+        if (used_[e] && hdeg(Mesh::face(e)) == 2 && hdeg(across(e)) == 2) cost += 1 - 2 * swap_at(e);
     return cost;
 }
 
@@ -222,18 +218,18 @@ int MatchingBuilder::split_join_cost(uint32_t h) const {
 // already breaks costs less.
 void MatchingBuilder::merge_by_cost() {
     constexpr int kLow = -2, kBuckets = 9;
-    std::vector<uint32_t> bucket[kBuckets];
-    auto candidate = [&](uint32_t h) {
+    std::vector<HalfedgeId> bucket[kBuckets];
+    auto candidate = [&](HalfedgeId h) {
         if (!passable(h) || used_[h]) return false;
-        const uint32_t f = face_of(h), g = across(h);
-        const uint32_t a = find(sid_[f]), b = find(sid_[g]);
+        const FaceId f = Mesh::face(h), g = across(h);
+        const StructId a = find(sid_[f]), b = find(sid_[g]);
         return a != b && (cycle_[a] || cycle_[b]) && !vlink_[f] && !vlink_[g];
     };
-    for (uint32_t h = 0; h < mesh_.num_halfedges(); ++h)
-        if (h < mesh_.twin(HalfedgeId(h)).idx() && candidate(h)) bucket[split_join_cost(h) - kLow].push_back(h);
+    for (HalfedgeId h : mesh_.halfedges())
+        if (h < mesh_.twin(h) && candidate(h)) bucket[split_join_cost(h) - kLow].push_back(h);
     for (int i = 0; i < kBuckets; ++i)
         while (!bucket[i].empty()) {
-            const uint32_t h = bucket[i].back();
+            const HalfedgeId h = bucket[i].back();
             bucket[i].pop_back();
             if (!candidate(h)) continue;
             const int c = split_join_cost(h) - kLow;
@@ -250,25 +246,25 @@ void MatchingBuilder::merge_by_cost() {
 void MatchingBuilder::merge_all() {
     for (bool allow_split : {false, true, false}) {
         if (allow_split) merge_by_cost();
-        for (uint32_t f = 0; f < mesh_.num_faces(); ++f)
-            for (uint32_t k = 0; k < 3; ++k) {
-                const uint32_t h = 3 * f + k;
-                if (!passable(h) || used_[h]) continue;
-                if (find(sid_[f]) == find(sid_[mesh_.neighbor(HalfedgeId(h)).idx()]) && (cycle_[find(sid_[f])] || hdeg(f) == 2)) continue;
-                if (try_merge(h, allow_split)) k = kNone;  // f's edges changed: look at all three again
+        for (uint32_t fi = 0; fi < mesh_.num_faces(); ++fi) {  // a join may split: faces are added
+            const FaceId f(fi);
+            for (uint32_t k = 0; k < 3;) {
+                const HalfedgeId h = Mesh::halfedge(f, k);
+                const bool skip =
+                    !passable(h) || used_[h] || (find(sid_[f]) == find(sid_[across(h)]) && (cycle_[find(sid_[f])] || hdeg(f) == 2));
+                k = !skip && try_merge(h, allow_split) ? 0 : k + 1;  // f's edges changed: look at all three again
             }
+        }
     }
 }
 
 bool MatchingBuilder::single_strip_ready() {
-    uint32_t roots = 0, root = kNone;
-    for (uint32_t s = 0; s < uf_.size(); ++s)
+    uint32_t roots = 0;
+    StructId root = kNone;
+    for (StructId s : IdRange<StructId>(static_cast<uint32_t>(uf_.size())))
         if (find(s) == s) ++roots, root = s;
     if (roots != 1) return false;
     return num_pins_ != 2 || cycle_[root];
 }
-
-// The faces in strip order: from the first pinned face, else from a path end, else around the
-// loop from face 0. Empty if the crossed edges do not form one strip.
 
 }  // namespace singlestrip::matching

@@ -26,21 +26,20 @@ struct keep_matching {
 
 }  // namespace
 
-bool MatchingBuilder::augment_from(uint32_t u, std::vector<uint32_t>& stamp, uint32_t mark, size_t budget) {
-    std::vector<uint32_t>& queue = aug_queue_;
+bool MatchingBuilder::augment_from(FaceId u, IdVector<FaceId, uint32_t>& stamp, uint32_t mark, size_t budget) {
+    std::vector<FaceId>& queue = aug_queue_;
     queue.assign(1, u);
     stamp[u] = mark;
     for (size_t head = 0; head < queue.size() && queue.size() < budget; ++head) {
-        const uint32_t x = queue[head];
-        for (uint32_t k = 0; k < 3; ++k) {
-            const uint32_t h = 3 * x + k;
+        const FaceId x = queue[head];
+        for (HalfedgeId h : sides(x)) {
             if (!passable(h) || matched_[h]) continue;
-            const uint32_t y = mesh_.neighbor(HalfedgeId(h)).idx();
+            const FaceId y = across(h);
             if (stamp[y] == mark) continue;
             stamp[y] = mark;
             if (quota_[y] > 0) {  // flip the path back to u
                 set_pair(matched_, h, 1);
-                for (uint32_t z = x; z != u; z = aug_prev_[z]) {
+                for (FaceId z = x; z != u; z = aug_prev_[z]) {
                     set_pair(matched_, aug_matched_[z], 0);
                     set_pair(matched_, aug_unmatched_[z], 1);
                 }
@@ -48,10 +47,9 @@ bool MatchingBuilder::augment_from(uint32_t u, std::vector<uint32_t>& stamp, uin
                 --quota_[y];
                 return true;
             }
-            for (uint32_t j = 0; j < 3; ++j) {
-                const uint32_t e = 3 * y + j;
+            for (HalfedgeId e : sides(y)) {
                 if (!matched_[e]) continue;
-                const uint32_t z = mesh_.neighbor(HalfedgeId(e)).idx();
+                const FaceId z = across(e);
                 if (stamp[z] == mark) continue;
                 stamp[z] = mark;
                 aug_prev_[z] = x;
@@ -69,7 +67,7 @@ bool MatchingBuilder::augment_from(uint32_t u, std::vector<uint32_t>& stamp, uin
 // they are. Where a perfect matching exists (closed surfaces) this finds the alternating paths
 // through odd cycles that the plain search misses. True if a ball was cut off by its size (a
 // larger one might still help); otherwise the matching is maximum where faces are still short.
-bool MatchingBuilder::repair_in_balls(std::vector<uint32_t>& short_faces, size_t ball) {
+bool MatchingBuilder::repair_in_balls(std::vector<FaceId>& short_faces, size_t ball) {
     bool truncated = false;
     ball_local_.assign(mesh_.num_faces(), kNone);
     if (ball > kBallOneByOne) {  // large balls overlap: one search over their union
@@ -77,53 +75,65 @@ bool MatchingBuilder::repair_in_balls(std::vector<uint32_t>& short_faces, size_t
     } else {
         // A ball that was not cut off is the whole component: Edmonds left its matching maximum,
         // so the component's other short faces need no ball of their own.
-        std::vector<uint8_t>& whole = ball_whole_;
+        IdVector<FaceId, uint8_t>& whole = ball_whole_;
         whole.assign(mesh_.num_faces(), 0);
-        for (uint32_t s : std::vector<uint32_t>(short_faces))
+        for (FaceId s : std::vector<FaceId>(short_faces))
             if (quota_[s] > 0 && !whole[s]) truncated |= repair_ball({s}, ball, &whole);
     }
-    std::erase_if(short_faces, [&](uint32_t f) { return quota_[f] == 0; });
+    std::erase_if(short_faces, [&](FaceId f) { return quota_[f] == 0; });
     return truncated;
 }
 
 // Edmonds on the union of the balls around `short_faces` (repair_in_balls()); true if a ball was
 // cut off by its size.
-bool MatchingBuilder::repair_ball(const std::vector<uint32_t>& short_faces, size_t ball, std::vector<uint8_t>* whole) {
-    std::vector<uint32_t>& local = ball_local_;  // kNone outside the ball, on entry and exit
-    std::vector<uint32_t> faces, queue;
+bool MatchingBuilder::repair_ball(const std::vector<FaceId>& short_faces, size_t ball, IdVector<FaceId, uint8_t>* whole) {
+    // A face's first graph vertex; kNone outside the ball, on entry and exit. While the ball is
+    // gathered, BallVertex(0) only marks a face as reached.
+    IdVector<FaceId, BallVertex>& local = ball_local_;
+    std::vector<FaceId> faces, queue;
     bool truncated = false;
-    for (uint32_t s : short_faces) {
+    for (FaceId s : short_faces) {
         if (local[s] != kNone) continue;
         queue.assign(1, s);
-        local[s] = 0;
+        local[s] = BallVertex(0);
         for (size_t head = 0; head < queue.size() && queue.size() < ball; ++head)
-            for (uint32_t h = 3 * queue[head]; h < 3 * queue[head] + 3; ++h) {
+            for (HalfedgeId h : sides(queue[head])) {
                 if (!passable(h)) continue;
-                const uint32_t g = mesh_.neighbor(HalfedgeId(h)).idx();
-                if (local[g] == kNone) local[g] = 0, queue.push_back(g);
+                const FaceId g = across(h);
+                if (local[g] == kNone) local[g] = BallVertex(0), queue.push_back(g);
             }
         faces.insert(faces.end(), queue.begin(), queue.end());
         truncated |= queue.size() >= ball;
     }
     if (whole && !truncated)
-        for (uint32_t f : faces) (*whole)[f] = 1;
+        for (FaceId f : faces) (*whole)[f] = 1;
     // Keep faces that take matched edges and whose partners are all inside too. A pinned face
     // takes two: it gets two copies, each linked to all its neighbours (b-matching to matching).
-    auto want = [&](uint32_t f) { return std::max(0, static_cast<int>(degree(f)) - (2 - vlink_[f])); };
-    std::vector<uint32_t> kept, owner;
-    for (uint32_t f : faces) local[f] = want(f) > 0 ? 0 : kNone;
-    for (uint32_t f : faces) {
+    auto want = [&](FaceId f) { return std::max(0, static_cast<int>(degree(f)) - (2 - vlink_[f])); };
+    std::vector<FaceId> kept, owner;
+    for (FaceId f : faces) local[f] = want(f) > 0 ? BallVertex(0) : BallVertex();
+    for (FaceId f : faces) {
         if (local[f] == kNone) continue;
         bool inside = true;
-        for (uint32_t h = 3 * f; h < 3 * f + 3; ++h)
-            if (matched_[h] && local[mesh_.neighbor(HalfedgeId(h)).idx()] == kNone) inside = false;
+        for (HalfedgeId h : sides(f))
+            if (matched_[h] && local[across(h)] == kNone) inside = false;
         if (inside) kept.push_back(f);
     }
-    for (uint32_t f : faces) local[f] = kNone;
-    for (uint32_t f : kept) {
-        local[f] = static_cast<uint32_t>(owner.size());
+    for (FaceId f : faces) local[f] = kNone;
+    for (FaceId f : kept) {
+        local[f] = BallVertex(static_cast<uint32_t>(owner.size()));
         for (int c = 0; c < want(f); ++c) owner.push_back(f);
     }
+    match_ball(kept, owner, want);
+    for (FaceId f : kept) local[f] = kNone;
+    return truncated;
+}
+
+// Edmonds on the graph of the kept faces of a ball: `owner` maps each graph vertex to its face,
+// ball_local_ each face to its first vertex; the face's want(f) copies follow it.
+template <class Want>
+void MatchingBuilder::match_ball(const std::vector<FaceId>& kept, const std::vector<FaceId>& owner, const Want& want) {
+    const IdVector<FaceId, BallVertex>& local = ball_local_;
     // Edges kept in vectors and the graph built in one go: Boost's default edge list allocates
     // per edge.
     using Graph = boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS, boost::no_property, boost::no_property,
@@ -132,57 +142,52 @@ bool MatchingBuilder::repair_ball(const std::vector<uint32_t>& short_faces, size
     const Vertex null = boost::graph_traits<Graph>::null_vertex();
     std::vector<std::pair<uint32_t, uint32_t>> edges;
     std::vector<Vertex> mate(owner.size(), null);
-    auto free_copy = [&](uint32_t f) {
-        for (uint32_t v = local[f]; v < local[f] + static_cast<uint32_t>(want(f)); ++v)
-            if (mate[v] == null) return v;
-        return uint32_t{kNone};
+    auto free_copy = [&](FaceId f) {
+        for (uint32_t v = local[f].idx(); v < local[f].idx() + static_cast<uint32_t>(want(f)); ++v)
+            if (mate[v] == null) return BallVertex(v);
+        return BallVertex();
     };
-    for (uint32_t f : kept)
-        for (uint32_t h = 3 * f; h < 3 * f + 3; ++h) {
+    for (FaceId f : kept)
+        for (HalfedgeId h : sides(f)) {
             if (!passable(h)) continue;
-            const uint32_t g = mesh_.neighbor(HalfedgeId(h)).idx();
+            const FaceId g = across(h);
             if (local[g] == kNone || local[g] <= local[f]) continue;
             for (int c = 0; c < want(f); ++c)
-                for (int d = 0; d < want(g); ++d) edges.emplace_back(local[f] + c, local[g] + d);
-            const uint32_t vf = free_copy(f), vg = free_copy(g);
-            if (matched_[h] && vf != kNone && vg != kNone) mate[vf] = vg, mate[vg] = vf;
+                for (int d = 0; d < want(g); ++d) edges.emplace_back(local[f].idx() + c, local[g].idx() + d);
+            const BallVertex vf = free_copy(f), vg = free_copy(g);
+            if (matched_[h] && vf != kNone && vg != kNone) mate[vf.idx()] = vg.idx(), mate[vg.idx()] = vf.idx();
         }
     const Graph graph(edges.begin(), edges.end(), owner.size());
     boost::matching<Graph, Vertex*, boost::property_map<Graph, boost::vertex_index_t>::type, boost::edmonds_augmenting_path_finder,
                     keep_matching, boost::no_matching_verifier>(graph, mate.data(), boost::get(boost::vertex_index, graph));
-    for (uint32_t f : kept)
-        for (uint32_t h = 3 * f; h < 3 * f + 3; ++h) matched_[h] = 0;
+    for (FaceId f : kept)
+        for (HalfedgeId h : sides(f)) matched_[h] = 0;
     for (uint32_t v = 0; v < owner.size(); ++v) {
         if (mate[v] == null || mate[v] < v) continue;
-        const uint32_t f = owner[v], g = owner[mate[v]];
-        for (uint32_t h = 3 * f; h < 3 * f + 3; ++h)
-            if (passable(h) && !matched_[h] && mesh_.neighbor(HalfedgeId(h)).idx() == g) {
+        const FaceId f = owner[v], g = owner[mate[v]];
+        for (HalfedgeId h : sides(f))
+            if (passable(h) && !matched_[h] && across(h) == g) {
                 set_pair(matched_, h, 1);
                 break;
             }
     }
-    for (uint32_t f : kept) {
-        const int have = matched_[3 * f] + matched_[3 * f + 1] + matched_[3 * f + 2];
-        quota_[f] = static_cast<uint8_t>(std::max(0, want(f) - have));
-    }
-    for (uint32_t f : kept) local[f] = kNone;
-    return truncated;
+    for (FaceId f : kept) quota_[f] = static_cast<uint8_t>(std::max(0, want(f) - num_matched(f)));
 }
 
 // Faces the matching left short: local augmenting searches with a growing budget; what is still
 // short drops crossed edges instead (each drop leaves a path end).
-void MatchingBuilder::repair_short(std::vector<uint32_t>& short_faces) {
+void MatchingBuilder::repair_short(std::vector<FaceId>& short_faces) {
     const uint32_t nf = mesh_.num_faces();
-    std::vector<uint32_t> stamp(nf, 0);
+    IdVector<FaceId, uint32_t> stamp(nf, 0);
     aug_prev_.assign(nf, kNone);
     aug_matched_.assign(nf, kNone);
     aug_unmatched_.assign(nf, kNone);
     uint32_t mark = 0;
     for (size_t budget : {size_t{64}, size_t{1024}}) {
-        for (uint32_t f : short_faces)
+        for (FaceId f : short_faces)
             while (quota_[f] > 0 && augment_from(f, stamp, ++mark, budget)) {
             }
-        std::erase_if(short_faces, [&](uint32_t f) { return quota_[f] == 0; });
+        std::erase_if(short_faces, [&](FaceId f) { return quota_[f] == 0; });
     }
     // Edmonds from each face alone, bounded so that all of them touch O(F) faces: a face it
     // proves hopeless needs no ball. No upper cap: the last few short faces of a large mesh can
@@ -190,14 +195,14 @@ void MatchingBuilder::repair_short(std::vector<uint32_t>& short_faces) {
     // unbounded, matched in 1.4 s).
     // (An augmenting path never ends at a hopeless face: reversed, it would start there.)
     const size_t budget = std::max<size_t>(16 * size_t{nf} / std::max<size_t>(1, short_faces.size()), 1024);
-    std::vector<uint32_t> hopeless;
-    std::erase_if(short_faces, [&](uint32_t f) {
+    std::vector<FaceId> hopeless;
+    std::erase_if(short_faces, [&](FaceId f) {
         if (quota_[f] == 0) return true;
         const Search r = in_blossom_graph(f) ? blossom_search(f, budget) : Search::Unknown;
         if (r == Search::NoPath) hopeless.push_back(f);
         return r != Search::Unknown;
     });
-    std::erase_if(short_faces, [&](uint32_t f) { return quota_[f] == 0; });
+    std::erase_if(short_faces, [&](FaceId f) { return quota_[f] == 0; });
     // Edmonds on balls: each face's own, then one search over the union of larger balls (it
     // costs O(ball) per augmenting path).
     // Larger balls only for few faces: many faces still short are structural (no 2-factor).
@@ -205,10 +210,10 @@ void MatchingBuilder::repair_short(std::vector<uint32_t>& short_faces) {
         const size_t most = ball == 512 ? SIZE_MAX : ball == kBallOneByOne ? 64 : 16;
         if (short_faces.empty() || short_faces.size() > most) break;
         if (ball > kBallOneByOne) {  // a long plain search first: far cheaper than Edmonds on the union
-            for (uint32_t f : short_faces)
+            for (FaceId f : short_faces)
                 while (quota_[f] > 0 && augment_from(f, stamp, ++mark, size_t{1} << 17)) {
                 }
-            std::erase_if(short_faces, [&](uint32_t f) { return quota_[f] == 0; });
+            std::erase_if(short_faces, [&](FaceId f) { return quota_[f] == 0; });
             if (short_faces.empty()) break;
         }
         if (!repair_in_balls(short_faces, ball)) break;
@@ -221,12 +226,11 @@ void MatchingBuilder::repair_short(std::vector<uint32_t>& short_faces) {
 // the dual graph gains odd cycles there: a region whose faces alternate like a chessboard (grids
 // with holes) has no 2-factor when its two colours differ in number; one split beside a short
 // face lets an augmenting path through. False if u has no such edge.
-bool MatchingBuilder::split_beside(uint32_t u) {
-    uint32_t best = kNone;
-    for (uint32_t h = 3 * u; h < 3 * u + 3; ++h) {
+bool MatchingBuilder::split_beside(FaceId u) {
+    HalfedgeId best = kNone;
+    for (HalfedgeId h : sides(u)) {
         if (!passable(h) || matched_[h]) continue;
-        const uint32_t g = mesh_.neighbor(HalfedgeId(h)).idx();
-        if (best == kNone || degree(g) == 3) best = h;
+        if (best == kNone || degree(across(h)) == 3) best = h;
     }
     if (best == kNone) return false;
     requota(split(best));
@@ -234,17 +238,15 @@ bool MatchingBuilder::split_beside(uint32_t u) {
 }
 
 void MatchingBuilder::requota(const SplitResult& sr) {
-    for (uint32_t f : {sr.f_a.idx(), sr.f_b.idx(), sr.g_a.idx(), sr.g_b.idx()}) {
-        const int have = matched_[3 * f] + matched_[3 * f + 1] + matched_[3 * f + 2];
-        quota_[f] = static_cast<uint8_t>(std::max(0, static_cast<int>(degree(f)) - (2 - vlink_[f]) - have));
-    }
+    for (FaceId f : {sr.f_a, sr.f_b, sr.g_a, sr.g_b})
+        quota_[f] = static_cast<uint8_t>(std::max(0, static_cast<int>(degree(f)) - (2 - vlink_[f]) - num_matched(f)));
 }
 
 void MatchingBuilder::settle_leftovers() {
-    std::vector<uint32_t> short_faces;
+    std::vector<FaceId> short_faces;
     auto collect = [&] {
         short_faces.clear();
-        for (uint32_t f = 0; f < mesh_.num_faces(); ++f)
+        for (FaceId f : mesh_.faces())
             if (quota_[f] > 0) short_faces.push_back(f);
     };
     collect();
@@ -269,7 +271,7 @@ void MatchingBuilder::settle_leftovers() {
     for (uint32_t round = 0; round < 4 && !short_faces.empty(); ++round) {
         const size_t before = short_faces.size();
         bool any = false;
-        for (uint32_t u : std::vector<uint32_t>(short_faces))
+        for (FaceId u : std::vector<FaceId>(short_faces))
             if (quota_[u] > 0) any |= split_beside(u);
         if (!any) break;
         collect();
@@ -278,12 +280,11 @@ void MatchingBuilder::settle_leftovers() {
         if (short_faces.size() >= before) break;
     }
     if (opt_.validate_each_split) check_matching();
-    const uint32_t nf = mesh_.num_faces();
-    for (uint32_t h = 0; h < 3 * nf; ++h) used_[h] = passable(h) && !matched_[h];
-    for (uint32_t f : short_faces)
+    for (HalfedgeId h : mesh_.halfedges()) used_[h] = passable(h) && !matched_[h];
+    for (FaceId f : short_faces)
         for (uint32_t k = 0; k < 3 && quota_[f] > 0; ++k)
-            if (used_[3 * f + k]) {
-                set_pair(used_, 3 * f + k, 0);
+            if (used_[Mesh::halfedge(f, k)]) {
+                set_pair(used_, Mesh::halfedge(f, k), 0);
                 --quota_[f];
             }
     stats_.unmatched = static_cast<uint32_t>(short_faces.size());
@@ -304,17 +305,17 @@ void MatchingBuilder::release_repair_scratch() {
 // The matching's invariant: a face has exactly its wanted matched edges less its quota, all
 // passable and symmetric across twins.
 void MatchingBuilder::check_matching() const {
-    for (uint32_t f = 0; f < mesh_.num_faces(); ++f) {
+    for (FaceId f : mesh_.faces()) {
         int have = 0;
-        for (uint32_t h = 3 * f; h < 3 * f + 3; ++h) {
+        for (HalfedgeId h : sides(f)) {
             if (!matched_[h]) continue;
-            if (!passable(h) || !matched_[twin_of(h)])
-                throw InternalError("matching engine: face " + std::to_string(f) + " is matched across a closed or one-sided edge");
+            if (!passable(h) || !matched_[mesh_.twin(h)])
+                throw InternalError("matching engine: face " + std::to_string(f.idx()) + " is matched across a closed or one-sided edge");
             ++have;
         }
         const int want = std::max(0, static_cast<int>(degree(f)) - (2 - vlink_[f]));
         if (have + quota_[f] != want)
-            throw InternalError("matching engine: face " + std::to_string(f) + " has " + std::to_string(have) +
+            throw InternalError("matching engine: face " + std::to_string(f.idx()) + " has " + std::to_string(have) +
                                 " matched edges and quota " + std::to_string(quota_[f]) + " but wants " + std::to_string(want));
     }
 }

@@ -33,11 +33,11 @@ void PathOrder::pull(uint32_t x) {
 }
 
 // Cartesian tree of `items` by priority, in linear time (right spine on a stack).
-uint32_t PathOrder::build(const std::vector<uint32_t>& items, bool reversed) {
+uint32_t PathOrder::build(const std::vector<FaceId>& items, bool reversed) {
     std::vector<uint32_t> spine;
     const std::size_t n = items.size();
     for (std::size_t i = 0; i < n; ++i) {
-        const uint32_t x = items[reversed ? n - 1 - i : i];
+        const uint32_t x = items[reversed ? n - 1 - i : i].idx();
         left_[x] = right_[x] = parent_[x] = kNil;
         flip_[x] = 0;
         uint32_t last = kNil;
@@ -98,15 +98,16 @@ void PathOrder::split(uint32_t t, uint32_t k, uint32_t& a, uint32_t& b) {
     if (b != kNil) parent_[b] = kNil;
 }
 
-void PathOrder::append(const std::vector<uint32_t>& items) {
+void PathOrder::append(const std::vector<FaceId>& items) {
     root_ = merge(root_, build(items, false));
 }
 
-void PathOrder::prepend(const std::vector<uint32_t>& items) {
+void PathOrder::prepend(const std::vector<FaceId>& items) {
     root_ = merge(build(items, true), root_);
 }
 
-uint32_t PathOrder::position(uint32_t x) {
+uint32_t PathOrder::position(FaceId f) {
+    const uint32_t x = f.idx();
     up_.clear();  // flips above x must be pushed before sizes say where x is
     for (uint32_t y = x; y != kNil; y = parent_[y]) up_.push_back(y);
     for (std::size_t i = up_.size(); i-- > 0;) push(up_[i]);
@@ -118,12 +119,12 @@ uint32_t PathOrder::position(uint32_t x) {
     return pos;
 }
 
-uint32_t PathOrder::at(uint32_t k) {
+FaceId PathOrder::at(uint32_t k) {
     uint32_t t = root_;
     for (;;) {
         push(t);
         const uint32_t ls = left_[t] == kNil ? 0 : size_[left_[t]];
-        if (k == ls) return t;
+        if (k == ls) return FaceId(t);
         if (k < ls) {
             t = left_[t];
         } else {
@@ -147,8 +148,9 @@ void PathOrder::reverse_back(uint32_t k) {
     root_ = merge(a, b);
 }
 
-std::vector<uint32_t> PathOrder::items() {
-    std::vector<uint32_t> out, stack;
+std::vector<FaceId> PathOrder::items() {
+    std::vector<FaceId> out;
+    std::vector<uint32_t> stack;
     out.reserve(size());
     for (uint32_t t = root_; t != kNil || !stack.empty();) {
         while (t != kNil) {
@@ -158,7 +160,7 @@ std::vector<uint32_t> PathOrder::items() {
         }
         t = stack.back();
         stack.pop_back();
-        out.push_back(t);
+        out.push_back(FaceId(t));
         t = right_[t];
     }
     return out;

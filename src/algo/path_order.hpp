@@ -7,32 +7,34 @@
 #include <cstdint>
 #include <vector>
 
+#include "singlestrip/mesh.hpp"
+
 namespace singlestrip {
 
 class PathOrder {
 public:
     static constexpr uint32_t kNil = UINT32_MAX;
 
-    /// Room for elements 0..n-1; none is in the sequence yet. O(n).
+    /// Room for faces 0..n-1 (a face is its own tree node); none is in the sequence yet. O(n).
     explicit PathOrder(uint32_t n);
 
     /// Appends `items` (not yet in the sequence) at the back, in order. O(k + log n).
-    void append(const std::vector<uint32_t>& items);
+    void append(const std::vector<FaceId>& items);
     /// Puts `items` before the front, items[0] next to the old front and items.back() first (the
     /// path grows from its front end as it does from its back end). O(k + log n).
-    void prepend(const std::vector<uint32_t>& items);
-    /// Position of element x (0 = front). \pre x is in the sequence. O(log n) expected.
-    [[nodiscard]] uint32_t position(uint32_t x);
-    /// Element at position k. \pre k < size(). O(log n) expected.
-    [[nodiscard]] uint32_t at(uint32_t k);
+    void prepend(const std::vector<FaceId>& items);
+    /// Position of face x (0 = front). \pre x is in the sequence. O(log n) expected.
+    [[nodiscard]] uint32_t position(FaceId x);
+    /// Face at position k. \pre k < size(). O(log n) expected.
+    [[nodiscard]] FaceId at(uint32_t k);
     /// Reverses positions [0, k) (front part) or [k, size) (back part). O(log n) expected.
     void reverse_front(uint32_t k);
     void reverse_back(uint32_t k);
     [[nodiscard]] uint32_t size() const { return root_ == kNil ? 0 : size_[root_]; }
-    [[nodiscard]] uint32_t front() { return at(0); }
-    [[nodiscard]] uint32_t back() { return at(size() - 1); }
+    [[nodiscard]] FaceId front() { return at(0); }
+    [[nodiscard]] FaceId back() { return at(size() - 1); }
     /// The whole sequence, front to back. O(n).
-    [[nodiscard]] std::vector<uint32_t> items();
+    [[nodiscard]] std::vector<FaceId> items();
 
 private:
     std::vector<uint32_t> left_, right_, parent_, size_;
@@ -43,7 +45,7 @@ private:
     [[nodiscard]] static uint32_t priority(uint32_t x);
     void push(uint32_t x);
     void pull(uint32_t x);
-    [[nodiscard]] uint32_t build(const std::vector<uint32_t>& items, bool reversed);
+    [[nodiscard]] uint32_t build(const std::vector<FaceId>& items, bool reversed);
     [[nodiscard]] uint32_t merge(uint32_t a, uint32_t b);
     void split(uint32_t t, uint32_t k, uint32_t& a, uint32_t& b);
 };

@@ -23,28 +23,32 @@
 
 namespace singlestrip::matching {
 
+static bool has_vertex(const Mesh& mesh, FaceId f, VertexId v) {
+    return face_has_vertex(mesh, f.idx(), v.idx());
+}
+
 // Pinned faces: the strip starts at pins_[0] and ends at pins_[1] (either may be absent).
 void MatchingBuilder::choose_pins() {
     const uint32_t nf = mesh_.num_faces();
-    uint32_t first = kNone, last = kNone;
+    FaceId first = kNone, last = kNone;
     if (opt_.seed_face)
-        first = opt_.seed_face->idx();
+        first = *opt_.seed_face;
     else if (opt_.source)
-        first = face_at_vertex(mesh_, blocked_, opt_.source->idx(), kNone);
+        first = FaceId(face_at_vertex(mesh_, blocked_.plain(), opt_.source->idx(), kNone));
     if (opt_.target && nf > 1) {
-        last = face_at_vertex(mesh_, blocked_, opt_.target->idx(), first);
+        last = FaceId(face_at_vertex(mesh_, blocked_.plain(), opt_.target->idx(), first.idx()));
         if (last == first) {
             // The target's only face is the first face: split it across the edge opposite the
             // target so that both children touch it; start in one, end in the other.
-            uint32_t h = 3 * first;
-            while (mesh_.from(HalfedgeId(h)).idx() == opt_.target->idx() || mesh_.to(HalfedgeId(h)).idx() == opt_.target->idx()) ++h;
+            HalfedgeId h = Mesh::halfedge(first, 0);
+            while (mesh_.from(h) == *opt_.target || mesh_.to(h) == *opt_.target) h = Mesh::next(h);
             if (!passable(h))
                 throw RequestError("cannot end at target vertex " + std::to_string(opt_.target->idx()) +
                                    ": its only face is the first face of the strip and cannot be split");
             const SplitResult sr = split(h);
-            const bool a_first = !opt_.source || face_has_vertex(mesh_, sr.f_a.idx(), opt_.source->idx());
-            first = a_first ? sr.f_a.idx() : sr.f_b.idx();
-            last = a_first ? sr.f_b.idx() : sr.f_a.idx();
+            const bool a_first = !opt_.source || has_vertex(mesh_, sr.f_a, *opt_.source);
+            first = a_first ? sr.f_a : sr.f_b;
+            last = a_first ? sr.f_b : sr.f_a;
         }
     }
     if (first != kNone) pins_[num_pins_++] = first;
@@ -54,37 +58,38 @@ void MatchingBuilder::choose_pins() {
 
 // Splits the interior edge of h; per-half-edge flags follow the two half-edges that move, the
 // four new inner edges start clear. Pins keep their vertex.
-SplitResult MatchingBuilder::split(uint32_t h) {
-    const uint32_t t = mesh_.twin(HalfedgeId(h)).idx(), hn = Mesh::next(HalfedgeId(h)).idx(), tn = Mesh::next(HalfedgeId(t)).idx();
-    const uint32_t pin_vertex[2] = {opt_.source ? opt_.source->idx() : kNone, opt_.target ? opt_.target->idx() : kNone};
-    for (const uint32_t c : {hn, tn})  // the two corners split_edge() moves to the midpoint
-        if (c < 3 * mesh_.num_input_faces()) overwritten_.emplace_back(c, mesh_.corner_vertices()[c]);
+SplitResult MatchingBuilder::split(HalfedgeId h) {
+    const HalfedgeId t = mesh_.twin(h), hn = Mesh::next(h), tn = Mesh::next(t);
+    const VertexId pin_vertex[2] = {opt_.source.value_or(kNone), opt_.target.value_or(kNone)};
+    for (const HalfedgeId c : {hn, tn})  // the two corners split_edge() moves to the midpoint
+        if (Mesh::face(c).idx() < mesh_.num_input_faces()) overwritten_.emplace_back(c, mesh_.from(c));
     split_log_.push_back(h);
-    const SplitResult sr = mesh_.split_edge(HalfedgeId(h));
+    const SplitResult sr = mesh_.split_edge(h);
     if (opt_.validate_each_split) mesh_.validate();
     ++stats_.splits;
-    const uint32_t fb0 = 3 * sr.f_b.idx(), ga0 = 3 * sr.g_a.idx();
-    for (auto* a : {&blocked_, &matched_, &used_}) {
+    const HalfedgeId fb[3] = {Mesh::halfedge(sr.f_b, 0), Mesh::halfedge(sr.f_b, 1), Mesh::halfedge(sr.f_b, 2)};
+    const HalfedgeId ga[3] = {Mesh::halfedge(sr.g_a, 0), Mesh::halfedge(sr.g_a, 1), Mesh::halfedge(sr.g_a, 2)};
+    for (EdgeFlags* a : {&blocked_, &matched_, &used_}) {
         reserve_gently(*a, mesh_.num_halfedges());
         a->resize(mesh_.num_halfedges(), 0);
-        (*a)[fb0 + 1] = (*a)[hn];
-        (*a)[ga0 + 1] = (*a)[tn];
-        for (uint32_t x : {h, hn, t, tn, fb0, fb0 + 2, ga0, ga0 + 2}) (*a)[x] = 0;
+        (*a)[fb[1]] = (*a)[hn];
+        (*a)[ga[1]] = (*a)[tn];
+        for (HalfedgeId x : {h, hn, t, tn, fb[0], fb[2], ga[0], ga[2]}) (*a)[x] = 0;
     }
     reserve_gently(vlink_, mesh_.num_faces());
     reserve_gently(quota_, mesh_.num_faces());
     vlink_.resize(mesh_.num_faces(), 0);
     quota_.resize(mesh_.num_faces(), 0);
     if (!sid_.empty()) reserve_gently(sid_, mesh_.num_faces());
-    if (!sid_.empty()) sid_.resize(mesh_.num_faces(), sid_[sr.f_a.idx()]), sid_[sr.g_a.idx()] = sid_[sr.g_b.idx()];
+    if (!sid_.empty()) sid_.resize(mesh_.num_faces(), sid_[sr.f_a]), sid_[sr.g_a] = sid_[sr.g_b];
     for (uint32_t i = 0; i < num_pins_; ++i) {
-        const uint32_t v = (i == 0 && !reversed_) ? pin_vertex[0] : pin_vertex[1];
+        const VertexId v = (i == 0 && !reversed_) ? pin_vertex[0] : pin_vertex[1];
         if (v == kNone) continue;
-        const uint32_t old = pins_[i];
-        if (old == sr.f_a.idx() && !face_has_vertex(mesh_, sr.f_a.idx(), v))
-            pins_[i] = sr.f_b.idx();
-        else if (old == sr.g_b.idx() && !face_has_vertex(mesh_, sr.g_b.idx(), v))
-            pins_[i] = sr.g_a.idx();
+        const FaceId old = pins_[i];
+        if (old == sr.f_a && !has_vertex(mesh_, sr.f_a, v))
+            pins_[i] = sr.f_b;
+        else if (old == sr.g_b && !has_vertex(mesh_, sr.g_b, v))
+            pins_[i] = sr.g_a;
         if (pins_[i] != old) std::swap(vlink_[old], vlink_[pins_[i]]);  // the virtual link moves along
     }
     return sr;
@@ -96,21 +101,20 @@ SplitResult MatchingBuilder::split(uint32_t h) {
 // and g's form a ring of four faces entered and left through g's other two edges, so g's
 // children are matched to each other (when g had three passable edges).
 void MatchingBuilder::split_ears() {
-    std::vector<uint32_t> ears;
-    for (uint32_t f = 0; f < mesh_.num_faces(); ++f)
+    std::vector<FaceId> ears;
+    for (FaceId f : mesh_.faces())
         if (degree(f) == 1) ears.push_back(f);
     if (mesh_.num_faces() <= 2) return;
-    for (uint32_t f : ears) {
+    for (FaceId f : ears) {
         if (f == pins_[0] || f == pins_[1] || degree(f) != 1) continue;
-        uint32_t h = 3 * f;
-        while (!passable(h)) ++h;
-        const uint32_t g = mesh_.neighbor(HalfedgeId(h)).idx();
+        HalfedgeId h = Mesh::halfedge(f, 0);
+        while (!passable(h)) h = Mesh::next(h);
+        const FaceId g = across(h);
         if (degree(g) == 1) continue;  // two faces only: an ear pair is a strip already
-        const uint32_t tn = Mesh::next(mesh_.twin(HalfedgeId(h))).idx();
+        const HalfedgeId tn = Mesh::next(mesh_.twin(h));
         const SplitResult sr = split(h);
-        const uint32_t inner = tn;  // after the split: g_b's half-edge towards g_a
-        const auto has_match = [&](uint32_t x) { return matched_[3 * x] | matched_[3 * x + 1] | matched_[3 * x + 2]; };
-        if (degree(sr.g_a.idx()) == 3 && degree(sr.g_b.idx()) == 3 && !has_match(sr.g_a.idx()) && !has_match(sr.g_b.idx()))
+        const HalfedgeId inner = tn;  // after the split: g_b's half-edge towards g_a
+        if (degree(sr.g_a) == 3 && degree(sr.g_b) == 3 && num_matched(sr.g_a) == 0 && num_matched(sr.g_b) == 0)
             set_pair(matched_, inner, 1);
     }
 }
@@ -120,25 +124,29 @@ void MatchingBuilder::split_ears() {
 // be covered by a path ending at it; split, the edge becomes two crossings (the four children
 // form a ring across it), which removes that parity constraint: a serpentine corridor of odd
 // length between walls has no 2-factor until its one-edge gaps are split.
-std::vector<uint32_t> MatchingBuilder::dual_bridges() const {
+std::vector<HalfedgeId> MatchingBuilder::dual_bridges() const {
     const uint32_t nf = mesh_.num_faces();
-    std::vector<uint32_t> order(nf, kNone), low(nf, 0), parent_edge(nf, kNone), size(nf, 1), bridges;
+    constexpr uint32_t kUnseen = 0;  // order is 1-based
+    IdVector<FaceId, uint32_t> order(nf, kUnseen), low(nf, 0), size(nf, 1);
+    IdVector<FaceId, HalfedgeId> parent_edge(nf, kNone);
+    std::vector<HalfedgeId> bridges;
     struct Frame {
-        uint32_t f, k;
+        FaceId f;
+        uint32_t k;
     };
     std::vector<Frame> stack;
-    uint32_t time = 0;
-    for (uint32_t r = 0; r < nf; ++r) {
-        if (order[r] != kNone) continue;
+    uint32_t time = 1;
+    for (FaceId r : mesh_.faces()) {
+        if (order[r] != kUnseen) continue;
         order[r] = low[r] = time++;
         stack.push_back({r, 0});
         while (!stack.empty()) {
             Frame& fr = stack.back();
             if (fr.k < 3) {
-                const uint32_t h = 3 * fr.f + fr.k++;
-                if (!passable(h) || mesh_.twin(HalfedgeId(h)).idx() == parent_edge[fr.f]) continue;
-                const uint32_t g = mesh_.neighbor(HalfedgeId(h)).idx();
-                if (order[g] == kNone) {
+                const HalfedgeId h = Mesh::halfedge(fr.f, fr.k++);
+                if (!passable(h) || mesh_.twin(h) == parent_edge[fr.f]) continue;
+                const FaceId g = across(h);
+                if (order[g] == kUnseen) {
                     order[g] = low[g] = time++;
                     parent_edge[g] = h;
                     stack.push_back({g, 0});
@@ -147,10 +155,10 @@ std::vector<uint32_t> MatchingBuilder::dual_bridges() const {
                 }
                 continue;
             }
-            const uint32_t f = fr.f;
+            const FaceId f = fr.f;
             stack.pop_back();
             if (parent_edge[f] == kNone) continue;
-            const uint32_t p = Mesh::face(HalfedgeId(parent_edge[f])).idx();
+            const FaceId p = Mesh::face(parent_edge[f]);
             low[p] = std::min(low[p], low[f]);
             size[p] += size[f];
             // A small side (a spike, a pendant ring) is better joined as a loop later.
@@ -162,13 +170,13 @@ std::vector<uint32_t> MatchingBuilder::dual_bridges() const {
 
 // Walks from face f away from face `from` through faces with two passable edges; true if it
 // reaches a face with three (a branch) within a bound.
-bool MatchingBuilder::chain_reaches_branch(uint32_t f, uint32_t from) const {
+bool MatchingBuilder::chain_reaches_branch(FaceId f, FaceId from) const {
     for (uint32_t step = 0; step < 64; ++step) {
         if (degree(f) == 3) return true;
         if (degree(f) != 2) return false;
-        uint32_t next = kNone;
-        for (uint32_t h = 3 * f; h < 3 * f + 3; ++h)
-            if (passable(h) && mesh_.neighbor(HalfedgeId(h)).idx() != from) next = mesh_.neighbor(HalfedgeId(h)).idx();
+        FaceId next = kNone;
+        for (HalfedgeId h : sides(f))
+            if (passable(h) && across(h) != from) next = across(h);
         if (next == kNone) return false;
         from = f;
         f = next;
@@ -179,8 +187,8 @@ bool MatchingBuilder::chain_reaches_branch(uint32_t f, uint32_t from) const {
 // Bridges on a chain that joins two branching faces are split; a chain ending in an ear or a
 // boundary (a fan, a strip of faces) is a strip already and is left alone.
 void MatchingBuilder::split_bridges() {
-    for (uint32_t h : dual_bridges()) {
-        const uint32_t f = Mesh::face(HalfedgeId(h)).idx(), g = mesh_.neighbor(HalfedgeId(h)).idx();
+    for (HalfedgeId h : dual_bridges()) {
+        const FaceId f = Mesh::face(h), g = across(h);
         if (f == pins_[0] || f == pins_[1] || g == pins_[0] || g == pins_[1]) continue;
         if (chain_reaches_branch(f, g) && chain_reaches_branch(g, f)) split(h);
     }
@@ -194,10 +202,9 @@ void MatchingBuilder::set_quotas() {
     for (uint32_t i = 0; i < num_pins_; ++i) vlink_[pins_[i]] = 1;
     if (num_pins_ == 2 && pins_[0] == pins_[1]) throw InternalError("matching engine: source and target faces coincide");
     quota_.assign(nf, 0);
-    for (uint32_t f = 0; f < nf; ++f) {
+    for (FaceId f : mesh_.faces()) {
         const int cap = 2 - vlink_[f];
-        const int have = matched_[3 * f] + matched_[3 * f + 1] + matched_[3 * f + 2];
-        quota_[f] = static_cast<uint8_t>(std::max(0, static_cast<int>(degree(f)) - cap - have));
+        quota_[f] = static_cast<uint8_t>(std::max(0, static_cast<int>(degree(f)) - cap - num_matched(f)));
     }
 }
 
@@ -206,14 +213,14 @@ void MatchingBuilder::set_quotas() {
 // faces matched across their outer edges instead cross every spoke: the fan becomes one loop
 // (with a swap per face, as any strip round a fan needs).
 void MatchingBuilder::match_fans() {
-    const uint32_t nh = mesh_.num_halfedges();
-    std::vector<uint32_t> valence(mesh_.num_vertices(), 0);
-    for (uint32_t h = 0; h < nh; ++h) ++valence[mesh_.from(HalfedgeId(h)).idx()];
-    for (uint32_t h = 0; h < nh; ++h) {
-        if (valence[mesh_.from(HalfedgeId(h)).idx()] < kFanValence) continue;
-        const uint32_t outer = Mesh::next(HalfedgeId(h)).idx(), f = Mesh::face(HalfedgeId(h)).idx();
+    IdVector<VertexId, uint32_t> valence(mesh_.num_vertices(), 0);
+    for (HalfedgeId h : mesh_.halfedges()) ++valence[mesh_.from(h)];
+    for (HalfedgeId h : mesh_.halfedges()) {
+        if (valence[mesh_.from(h)] < kFanValence) continue;
+        const HalfedgeId outer = Mesh::next(h);
+        const FaceId f = Mesh::face(h);
         if (!passable(outer) || matched_[outer] || quota_[f] == 0) continue;
-        const uint32_t g = mesh_.neighbor(HalfedgeId(outer)).idx();
+        const FaceId g = across(outer);
         if (quota_[g] == 0) continue;
         set_pair(matched_, outer, 1);
         --quota_[f];
@@ -224,16 +231,11 @@ void MatchingBuilder::match_fans() {
 // Swaps between faces of two crossed edges each, plus 8 per face left short (the repair of each
 // costs about that many: turbine.off, 39 short faces, 894 swaps).
 long MatchingBuilder::pattern_cost() const {
-    const uint32_t nh = mesh_.num_halfedges();
-    auto crossed = [&](uint32_t h) { return passable(h) && !matched_[h]; };
-    auto turns = [&](uint32_t f) { return crossed(3 * f) + crossed(3 * f + 1) + crossed(3 * f + 2) + vlink_[f] == 2; };
+    auto crossed = [&](HalfedgeId h) { return passable(h) && !matched_[h]; };
     long cost = 0;
-    for (uint32_t h = 0; h < nh; ++h) {
-        const uint32_t t = mesh_.twin(HalfedgeId(h)).idx();
-        if (!crossed(h) || t < h || !turns(face_of(h)) || !turns(face_of(t))) continue;
-        cost += crossed(Mesh::prev(HalfedgeId(h)).idx()) == crossed(Mesh::next(HalfedgeId(t)).idx());
-    }
-    for (uint32_t f = 0; f < mesh_.num_faces(); ++f) cost += 8 * quota_[f];
+    for (HalfedgeId h : mesh_.halfedges())
+        if (crossed(h) && h < mesh_.twin(h)) cost += swap_test(h, crossed);
+    for (FaceId f : mesh_.faces()) cost += 8 * quota_[f];
     return cost;
 }
 
@@ -241,10 +243,12 @@ long MatchingBuilder::pattern_cost() const {
 // clean grid pattern, where the first order starts rows in arbitrary turns: knot.off 310 swaps
 // against 76). The one with the lower pattern_cost() is kept.
 void MatchingBuilder::choose_pattern() {
-    const std::vector<uint8_t> matched0 = matched_, quota0 = quota_;
+    const EdgeFlags matched0 = matched_;
+    const IdVector<FaceId, uint8_t> quota0 = quota_;
     match_patterned(false);
     const long cost_rows = pattern_cost();
-    std::vector<uint8_t> matched_rows = std::move(matched_), quota_rows = std::move(quota_);
+    EdgeFlags matched_rows = std::move(matched_);
+    IdVector<FaceId, uint8_t> quota_rows = std::move(quota_);
     matched_ = matched0;
     quota_ = quota0;
     match_patterned(true);
@@ -258,95 +262,97 @@ void MatchingBuilder::choose_pattern() {
 // alternate and the GL strip needs no swap there.
 void MatchingBuilder::match_patterned(bool mates) {
     const uint32_t nf = mesh_.num_faces();
-    std::vector<uint32_t> pref(nf, kNone), queue, critical;
-    std::vector<uint8_t> seen(nf, 0);
+    IdVector<FaceId, HalfedgeId> pref(nf, kNone);
+    std::vector<FaceId> queue, critical;
+    IdVector<FaceId, uint8_t> seen(nf, 0);
     // Karp-Sipser: a face left with one free neighbour takes it at once, before the pattern
     // asks, so few faces are left short (each costs an augmenting path, which breaks the pattern).
-    std::vector<uint8_t> free_n(nf, 0);
-    auto wants = [&](uint32_t h) { return passable(h) && !matched_[h] && quota_[mesh_.neighbor(HalfedgeId(h)).idx()] > 0; };
-    for (uint32_t f = 0; f < nf; ++f)
+    IdVector<FaceId, uint8_t> free_n(nf, 0);
+    auto wants = [&](HalfedgeId h) { return passable(h) && !matched_[h] && quota_[across(h)] > 0; };
+    for (FaceId f : mesh_.faces())
         if (quota_[f] > 0)
-            for (uint32_t h = 3 * f; h < 3 * f + 3; ++h) free_n[f] += wants(h);
-    for (uint32_t f = 0; f < nf; ++f)
+            for (HalfedgeId h : sides(f)) free_n[f] += wants(h);
+    for (FaceId f : mesh_.faces())
         if (quota_[f] > 0 && free_n[f] == 1) critical.push_back(f);
-    auto match = [&](uint32_t h) {
+    auto match = [&](HalfedgeId h) {
         set_pair(matched_, h, 1);
-        for (uint32_t x : {Mesh::face(HalfedgeId(h)).idx(), mesh_.neighbor(HalfedgeId(h)).idx()}) {
+        for (FaceId x : {Mesh::face(h), across(h)}) {
             if (--quota_[x] > 0) continue;
-            for (uint32_t e = 3 * x; e < 3 * x + 3; ++e) {
+            for (HalfedgeId e : sides(x)) {
                 if (!passable(e)) continue;
-                const uint32_t y = mesh_.neighbor(HalfedgeId(e)).idx();
+                const FaceId y = across(e);
                 if (quota_[y] > 0 && free_n[y] > 0 && --free_n[y] == 1) critical.push_back(y);
             }
         }
     };
     auto drain = [&] {
         while (!critical.empty()) {
-            const uint32_t x = critical.back();
+            const FaceId x = critical.back();
             critical.pop_back();
-            for (uint32_t e = 3 * x; e < 3 * x + 3 && quota_[x] > 0; ++e)
-                if (wants(e)) match(e);
+            for (uint32_t k = 0; k < 3 && quota_[x] > 0; ++k)
+                if (wants(Mesh::halfedge(x, k))) match(Mesh::halfedge(x, k));
         }
     };
     drain();
     queue.reserve(nf);
-    for (uint32_t s = 0; s < nf; ++s) {
+    for (FaceId s : mesh_.faces()) {
         if (seen[s]) continue;
         seen[s] = 1;
         queue.assign(1, s);
         for (size_t head = 0; head < queue.size(); ++head) {
-            const uint32_t f = queue[head];
-            for (uint32_t i = 0; i < 3 && quota_[f] > 0; ++i) {
-                const uint32_t h = i == 0 && pref[f] != kNone ? pref[f] : 3 * f + (i + (pref[f] == kNone ? 0 : pref[f] % 3)) % 3;
+            const FaceId f = queue[head];
+            // The preferred edge first, then on round the face.
+            HalfedgeId h = pref[f] != kNone ? pref[f] : Mesh::halfedge(f, 0);
+            for (uint32_t i = 0; i < 3 && quota_[f] > 0; ++i, h = Mesh::next(h))
                 if (wants(h)) match(h), drain();
-            }
-            uint32_t m = kNone;  // the edge this face does not cross
-            for (uint32_t k = 0; k < 3; ++k)
-                if (matched_[3 * f + k] || !passable(3 * f + k)) m = 3 * f + k;
-            for (uint32_t k = 0; k < 3; ++k) {
-                const uint32_t h = 3 * f + k;
-                if (mates && passable(h) && matched_[h] && !seen[across(h)]) {  // the mate's row next
-                    seen[across(h)] = 1;
-                    queue.push_back(across(h));
+            HalfedgeId m = kNone;  // the edge this face does not cross
+            for (HalfedgeId e : sides(f))
+                if (matched_[e] || !passable(e)) m = e;
+            for (HalfedgeId e : sides(f)) {
+                if (mates && passable(e) && matched_[e] && !seen[across(e)]) {  // the mate's row next
+                    seen[across(e)] = 1;
+                    queue.push_back(across(e));
                 }
-                if (!passable(h) || matched_[h]) continue;
-                const uint32_t g = mesh_.neighbor(HalfedgeId(h)).idx();
+                if (!passable(e) || matched_[e]) continue;
+                const FaceId g = across(e);
                 if (seen[g]) continue;
                 seen[g] = 1;
                 queue.push_back(g);
-                const uint32_t t = mesh_.twin(HalfedgeId(h)).idx();
-                if (m == Mesh::prev(HalfedgeId(h)).idx())
-                    pref[g] = Mesh::prev(HalfedgeId(t)).idx();  // m touches from(h): g's should touch to(h)
-                else if (m == Mesh::next(HalfedgeId(h)).idx())
-                    pref[g] = Mesh::next(HalfedgeId(t)).idx();  // and the other way round
+                const HalfedgeId t = mesh_.twin(e);
+                if (m == Mesh::prev(e))
+                    pref[g] = Mesh::prev(t);  // m touches from(e): g's should touch to(e)
+                else if (m == Mesh::next(e))
+                    pref[g] = Mesh::next(t);  // and the other way round
             }
         }
     }
 }
 
-// Augmenting path from a face still wanting a matched edge to another one: alternately an
-// unmatched and a matched passable edge. Faces are visited once (simple paths; blossoms are not
-// searched), at most `budget` of them. True if the matching grew.
+// The faces in strip order: from the first pinned face, else from a path end, else around the
+// loop from face 0. Plain face indices, as StripResult::order holds them.
 std::vector<uint32_t> MatchingBuilder::walk() const {
     const uint32_t nf = mesh_.num_faces();
-    uint32_t start = num_pins_ ? pins_[0] : kNone, in = kNone;
-    for (uint32_t f = 0; f < nf && start == kNone; ++f)
+    FaceId start = num_pins_ ? pins_[0] : kNone;
+    HalfedgeId in = kNone;
+    for (FaceId f : mesh_.faces()) {
+        if (start != kNone) break;
         if (hdeg(f) < 2) start = f;
+    }
     if (start == kNone) {  // one loop: cut it at face 0, as if entered by one of its crossed edges
-        start = 0;
-        for (uint32_t k = 0; k < 3; ++k)
-            if (used_[k]) in = k;
+        start = FaceId(0);
+        for (HalfedgeId h : sides(start))
+            if (used_[h]) in = h;
     }
     std::vector<uint32_t> order;
     order.reserve(nf);
-    for (uint32_t f = start; order.size() < nf;) {
-        order.push_back(f);
-        uint32_t out = kNone;
-        for (uint32_t k = 0; k < 3; ++k)
-            if (used_[3 * f + k] && 3 * f + k != in) out = 3 * f + k;
+    for (FaceId f = start; order.size() < nf;) {
+        order.push_back(f.idx());
+        HalfedgeId out = kNone;
+        for (HalfedgeId h : sides(f))
+            if (used_[h] && h != in) out = h;
         if (out == kNone) break;
-        in = mesh_.twin(HalfedgeId(out)).idx();
-        f = Mesh::face(HalfedgeId(in)).idx();
+        in = mesh_.twin(out);
+        f = Mesh::face(in);
         if (f == start) break;
     }
     return order;
@@ -356,7 +362,7 @@ StripResult MatchingBuilder::finish(std::vector<uint32_t> order) {
     const uint32_t nf = mesh_.num_faces();
     if (order.size() != nf)
         throw InternalError("matching engine: strip covers " + std::to_string(order.size()) + " of " + std::to_string(nf) + " faces");
-    if (num_pins_ == 2 && order.back() != pins_[1]) throw InternalError("matching engine: strip does not end at the target face");
+    if (num_pins_ == 2 && order.back() != pins_[1].idx()) throw InternalError("matching engine: strip does not end at the target face");
     if (reversed_) std::reverse(order.begin(), order.end());
     stats_.swaps = count_swaps(mesh_, order);
     stats_.output_triangles = nf;
@@ -372,7 +378,7 @@ StripResult MatchingBuilder::finish(std::vector<uint32_t> order) {
 StripResult MatchingBuilder::grow(Mesh mesh, uint32_t splits) const {
     StripOptions o = opt_;
     o.engine = StripEngine::Growth;
-    if (o.seed_face && o.source && !face_has_vertex(mesh, o.seed_face->idx(), o.source->idx())) o.seed_face.reset();
+    if (o.seed_face && o.source && !has_vertex(mesh, *o.seed_face, *o.source)) o.seed_face.reset();
     try {
         StripResult r = build_strip_growth(std::move(mesh), o);
         r.stats.splits += splits;
@@ -410,7 +416,7 @@ StripResult MatchingBuilder::as_fallback(StripResult r) const {
 // the input rebuilds it.
 Mesh MatchingBuilder::pre_merge_mesh(const Mesh& original) const {
     Mesh pre(original);
-    for (uint32_t i = 0; i < pre_merge_splits_; ++i) pre.split_edge(HalfedgeId(split_log_[i]));
+    for (uint32_t i = 0; i < pre_merge_splits_; ++i) pre.split_edge(split_log_[i]);
     return pre;
 }
 
@@ -452,17 +458,20 @@ StripResult MatchingBuilder::finish_or_grow(std::vector<uint32_t> order) {
 Mesh MatchingBuilder::input_mesh() const {
     TriangleSoup soup;
     soup.points.assign(mesh_.points().begin(), mesh_.points().begin() + mesh_.num_input_vertices());
-    const auto& cv = mesh_.corner_vertices();
     soup.triangles.resize(mesh_.num_input_faces());
-    for (uint32_t f = 0; f < soup.triangles.size(); ++f) soup.triangles[f] = {cv[3 * f], cv[3 * f + 1], cv[3 * f + 2]};
-    for (auto it = overwritten_.rbegin(); it != overwritten_.rend(); ++it) soup.triangles[it->first / 3][it->first % 3] = it->second;
+    for (FaceId f : IdRange<FaceId>(mesh_.num_input_faces()))
+        for (uint32_t k = 0; k < 3; ++k) soup.triangles[f.idx()][k] = mesh_.from(Mesh::halfedge(f, k)).idx();
+    for (auto it = overwritten_.rbegin(); it != overwritten_.rend(); ++it) {
+        const auto [corner, vertex] = *it;
+        soup.triangles[Mesh::face(corner).idx()][Mesh::index_in_face(corner)] = vertex.idx();
+    }
     return Mesh::from_soup(std::move(soup));
 }
 
 StripResult MatchingBuilder::run() {
     const uint32_t nf = mesh_.num_faces();
     check_strip_request(mesh_, opt_);
-    blocked_ = constraint_halfedges(mesh_, opt_);
+    blocked_ = EdgeFlags(constraint_halfedges(mesh_, opt_));
     stats_.input_triangles = nf;
     stats_.boundary_loops = mesh_.num_boundary_loops();
     stats_.genus = mesh_.genus();
@@ -485,7 +494,7 @@ StripResult MatchingBuilder::run() {
     if (opt_.validate_each_split) mesh_.validate();
     if (!single_strip_ready() || stats_.splits > stats_.input_triangles) return fallback();
     std::vector<uint32_t> order = walk();
-    if (order.size() != mesh_.num_faces() || (num_pins_ == 2 && order.back() != pins_[1])) return fallback();
+    if (order.size() != mesh_.num_faces() || (num_pins_ == 2 && order.back() != pins_[1].idx())) return fallback();
     return finish_or_grow(std::move(order));
 }
 
