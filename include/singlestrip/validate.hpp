@@ -47,6 +47,17 @@ struct PrepareOptions {
 ///        an error. Complexity O(V + F log F) worst case (union-find with path halving; no sort of the whole soup), linear in practice.
 TriangleSoup prepare_soup(TriangleSoup soup, const PrepareOptions& opt, const std::string& filename_for_messages);
 
+/// A prepared soup with its edge-connected components (numbered as face_components() does).
+struct PreparedSoup {
+    TriangleSoup soup;
+    std::vector<uint32_t> component;  ///< per face: its component, 0 .. num_components - 1
+    uint32_t num_components = 0;
+};
+
+/// prepare_soup() that also gives the components from the same analysis, so a caller that
+/// needs both pays for one. Throws and costs as prepare_soup().
+PreparedSoup prepare_soup_components(TriangleSoup soup, const PrepareOptions& opt, const std::string& filename_for_messages);
+
 /// Flips faces so that every component is consistently oriented, keeping the orientation of
 /// the majority of each component's faces (a tie: its lowest-numbered face's; flipping (a,b,c)
 /// gives (a,c,b)): never more than half of a component's faces are flipped. Faces that are out of

@@ -338,6 +338,19 @@ long long apply_flips(TriangleSoup& soup, const std::vector<int8_t>& flip) {
     return flipped;
 }
 
+/// Components numbered 0.. in the order of their lowest face; unusable faces get kNone.
+std::vector<uint32_t> number_components(const Analysis& a, uint32_t* count) {
+    std::vector<uint32_t> id(a.nf, kNone), of_root(a.nf, kNone);
+    uint32_t next = 0;
+    for (std::size_t f = 0; f < id.size(); ++f)
+        if (a.comp[f] != kNone) {
+            if (of_root[a.comp[f]] == kNone) of_root[a.comp[f]] = next++;
+            id[f] = of_root[a.comp[f]];
+        }
+    *count = next;
+    return id;
+}
+
 }  // namespace
 
 std::vector<SoupProblem> diagnose_soup(const TriangleSoup& soup) {
@@ -360,11 +373,12 @@ long long orient_soup(TriangleSoup& soup) {
     return apply_flips(soup, flip);
 }
 
-TriangleSoup prepare_soup(TriangleSoup soup, const PrepareOptions& opt, const std::string& filename_for_messages) {
-    // One analysis serves both steps: flipping faces by the BFS result changes nothing the
+PreparedSoup prepare_soup_components(TriangleSoup soup, const PrepareOptions& opt, const std::string& filename_for_messages) {
+    // One analysis serves every step: flipping faces by the BFS result changes nothing the
     // analysis found except the orientation findings, which it makes consistent (every 2-face
-    // edge then has flip[f] xor flip[g] == same-direction, so it runs opposite ways). A
-    // non-orientable soup is left as is and reported with everything else.
+    // edge then has flip[f] xor flip[g] == same-direction, so it runs opposite ways), and
+    // leaves the components as they were. A non-orientable soup is left as is and reported
+    // with everything else.
     Analysis a(soup);
     if (opt.orient && a.orientable && !a.oriented) {
         apply_flips(soup, a.flip);
@@ -372,19 +386,20 @@ TriangleSoup prepare_soup(TriangleSoup soup, const PrepareOptions& opt, const st
     }
     auto ps = a.problems();
     if (!ps.empty()) throw InputError(join_problems(ps, a.total_problems(), filename_for_messages));
-    return soup;
+    PreparedSoup out;
+    out.component = number_components(a, &out.num_components);
+    out.soup = std::move(soup);
+    return out;
+}
+
+TriangleSoup prepare_soup(TriangleSoup soup, const PrepareOptions& opt, const std::string& filename_for_messages) {
+    return prepare_soup_components(std::move(soup), opt, filename_for_messages).soup;
 }
 
 std::vector<uint32_t> face_components(const TriangleSoup& soup, uint32_t* count) {
-    Analysis a(soup);
-    std::vector<uint32_t> id(soup.triangles.size(), kNone), of_root(soup.triangles.size(), kNone);
-    uint32_t next = 0;
-    for (std::size_t f = 0; f < id.size(); ++f)
-        if (a.comp[f] != kNone) {
-            if (of_root[a.comp[f]] == kNone) of_root[a.comp[f]] = next++;
-            id[f] = of_root[a.comp[f]];
-        }
-    if (count) *count = next;
+    uint32_t n = 0;
+    std::vector<uint32_t> id = number_components(Analysis(soup), &n);
+    if (count) *count = n;
     return id;
 }
 

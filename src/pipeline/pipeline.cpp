@@ -205,7 +205,8 @@ PipelineResult stripify(TriangleSoup soup, const PipelineOptions& options, Pipel
     if (const std::string bad = attribute_problem(soup.attributes, soup.points.size()); !bad.empty())
         throw InputError(options.name + ": " + bad);
     soup = pre_repair(std::move(soup), options, r);
-    r.input = prepare_soup(std::move(soup), PrepareOptions{options.orient || options.repair}, options.name);
+    PreparedSoup prepared = prepare_soup_components(std::move(soup), PrepareOptions{options.orient || options.repair}, options.name);
+    r.input = std::move(prepared.soup);
     std::vector<ConstraintEdge>& constraints = r.options.strip.constraint_edges;
     if (options.constraints_file) {
         enter(stage, PipelineStage::Constraints);
@@ -217,8 +218,8 @@ PipelineResult stripify(TriangleSoup soup, const PipelineOptions& options, Pipel
         enter(stage, PipelineStage::Constraints);
         check_constraint_edges(r.input, constraints, options);
     }
-    uint32_t count = 0;
-    std::vector<uint32_t> comp = face_components(r.input, &count);
+    const uint32_t count = prepared.num_components;
+    std::vector<uint32_t> comp = std::move(prepared.component);
     warn_unwelded(r, count);
     r.seconds.build = clock.lap();
     if (count <= 1) {
