@@ -38,7 +38,8 @@ public:
     };
 
     /// Leaves out the faces with usable[f] == 0 (when `usable` is given) and any half-edge with an
-    /// end >= num_vertices. Two stable counting sorts, no comparisons: O(V + F). No errors (a
+    /// end >= num_vertices. A counting sort by the smaller end and insertion sorts of each end's
+    /// few half-edges, or two stable counting sorts where an end has many: O(V + F). No errors (a
     /// face that repeats a vertex gives half-edges with lo == hi, grouped like any other).
     SoupEdges(const std::vector<Triangle>& triangles, size_t num_vertices, const std::vector<char>* usable = nullptr);
 
@@ -82,6 +83,8 @@ public:
     [[nodiscard]] bool has_edge(uint32_t a, uint32_t b) const;
 
 private:
+    void sort_by_smaller_end(const std::vector<char>* usable);
+    void sort_two_pass(const std::vector<char>* usable);
     const std::vector<Triangle>* triangles_;
     std::vector<uint32_t> start_, halfedges_;
 };
