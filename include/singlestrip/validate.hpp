@@ -52,6 +52,10 @@ struct PreparedSoup {
     TriangleSoup soup;
     std::vector<uint32_t> component;  ///< per face: its component, 0 .. num_components - 1
     uint32_t num_components = 0;
+    /// Share of interior edges whose two faces are kFarFaces or more apart in the face order
+    /// (near 1 when the faces were shuffled): stripify() reorders such soups for locality.
+    double far_neighbours = 0.0;
+    static constexpr uint32_t kFarFaces = 32768;
 };
 
 /// prepare_soup() that also gives the components from the same analysis, so a caller that

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/soup_edges.hpp"
+#include "face_order.hpp"
 #include "core/topology.hpp"
 #include "singlestrip/errors.hpp"
 #include "singlestrip/mesh.hpp"
@@ -388,6 +389,7 @@ PreparedSoup prepare_soup_components(TriangleSoup soup, const PrepareOptions& op
     if (!ps.empty()) throw InputError(join_problems(ps, a.total_problems(), filename_for_messages));
     PreparedSoup out;
     out.component = number_components(a, &out.num_components);
+    out.far_neighbours = far_neighbour_share(a.twin, PreparedSoup::kFarFaces);
     out.soup = std::move(soup);
     return out;
 }
