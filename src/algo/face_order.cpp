@@ -28,14 +28,14 @@ Point3 centroid(const std::vector<Point3>& points, const Triangle& t) {
     return c;
 }
 
+// The box is the points' (one sequential pass), not the centroids': an unused far point only
+// coarsens the grid, which costs locality, never correctness.
 std::vector<uint32_t> morton_codes(const std::vector<Point3>& points, const std::vector<Triangle>& triangles) {
     Point3 lo{}, hi{};
     for (int i = 0; i < 3; ++i) lo[i] = std::numeric_limits<double>::max(), hi[i] = std::numeric_limits<double>::lowest();
-    for (const Triangle& t : triangles) {
-        const Point3 c = centroid(points, t);
+    for (const Point3& p : points)
         for (int i = 0; i < 3; ++i)
-            if (std::isfinite(c[i])) lo[i] = std::min(lo[i], c[i]), hi[i] = std::max(hi[i], c[i]);
-    }
+            if (std::isfinite(p[i])) lo[i] = std::min(lo[i], p[i]), hi[i] = std::max(hi[i], p[i]);
     std::vector<uint32_t> code(triangles.size());
     const double cells = (1u << kBitsPerAxis) - 1;
     for (size_t f = 0; f < triangles.size(); ++f) {

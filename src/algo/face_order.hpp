@@ -12,7 +12,7 @@
 namespace singlestrip {
 
 /// Faces of `triangles` by the Morton code of their centroids on a 1024^3 grid over the
-/// centroids' bounding box, ties in face order: result[i] = the face that goes to position i.
+/// points' bounding box, ties in face order: result[i] = the face that goes to position i.
 /// \pre every vertex index is < points.size(). Non-finite coordinates count as the box's low
 /// corner. Two counting-sort passes: O(F), 16 bytes a face of scratch.
 std::vector<uint32_t> spatial_face_order(const std::vector<Point3>& points, const std::vector<Triangle>& triangles);

@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "core/soup_edges.hpp"
-#include "face_order.hpp"
 #include "core/topology.hpp"
+#include "face_order.hpp"
 #include "singlestrip/errors.hpp"
 #include "singlestrip/mesh.hpp"
 #include "singlestrip/repair.hpp"

@@ -148,8 +148,10 @@ void improve_locality(PipelineResult& r, const PreparedSoup& prepared, std::vect
     permute(s.triangles);
     permute(s.source_polygon);
     permute(comp);
-    if (r.face_origin.empty()) r.face_origin = order;
-    else permute(r.face_origin);
+    if (r.face_origin.empty())
+        r.face_origin = order;
+    else
+        permute(r.face_origin);
 }
 
 /// Output vertices get the input's attributes (midpoints blended inside their parent face);

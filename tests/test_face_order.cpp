@@ -1,0 +1,127 @@
+// Faces of large shuffled soups are stripped in a Z-order of their centroids (face_order.hpp,
+// stripify()); the outputs still verify against the caller's soup and parents name its faces.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include "../src/algo/face_order.hpp"
+#include "fixtures.hpp"
+#include "singlestrip/mesh.hpp"
+#include "singlestrip/pipeline.hpp"
+#include "singlestrip/verify.hpp"
+#include "strip_check.hpp"
+
+namespace singlestrip {
+namespace {
+
+/// Every input vertex of an output face is a corner of that face's parent.
+bool parents_hold_their_faces(const TriangleSoup& in, const StripArrays& out) {
+    for (size_t i = 0; i < out.faces.size(); ++i) {
+        const Triangle& p = in.triangles[out.parent[i]];
+        for (uint32_t v : out.faces[i])
+            if (v < in.points.size() && std::find(p.begin(), p.end(), v) == p.end()) return false;
+    }
+    return true;
+}
+
+double mean_step(const TriangleSoup& s, const std::vector<uint32_t>& order) {
+    auto centre = [&](uint32_t f) {
+        Point3 c{};
+        for (uint32_t v : s.triangles[f])
+            for (int i = 0; i < 3; ++i) c[i] += s.points[v][i] / 3;
+        return c;
+    };
+    double sum = 0;
+    for (size_t i = 1; i < order.size(); ++i) {
+        const Point3 a = centre(order[i - 1]), b = centre(order[i]);
+        sum += std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
+    }
+    return sum / static_cast<double>(order.size() - 1);
+}
+
+TEST(FaceOrder, IsAPermutationThatFollowsTheSurface) {
+    TriangleSoup s = make_torus(64, 32);
+    shuffle_faces(s, 7);
+    const std::vector<uint32_t> order = spatial_face_order(s.points, s.triangles);
+    std::vector<uint32_t> sorted = order;
+    std::sort(sorted.begin(), sorted.end());
+    std::vector<uint32_t> identity(s.triangles.size());
+    std::iota(identity.begin(), identity.end(), 0u);
+    EXPECT_EQ(sorted, identity);
+    // Consecutive faces of the curve are near each other; of the shuffle, a torus apart.
+    EXPECT_LT(mean_step(s, order) * 8, mean_step(s, identity));
+}
+
+TEST(FaceOrder, NonFiniteAndFlatPointsStillGiveAPermutation) {
+    TriangleSoup s = make_grid_disk(20, 20);  // flat: one axis has no extent
+    s.points[0][0] = std::nan("");
+    const std::vector<uint32_t> order = spatial_face_order(s.points, s.triangles);
+    std::vector<char> seen(s.triangles.size(), 0);
+    for (uint32_t f : order) seen[f]++;
+    EXPECT_TRUE(std::all_of(seen.begin(), seen.end(), [](char c) { return c == 1; }));
+}
+
+TEST(FaceOrder, FarNeighbourShare) {
+    // Faces 0 and 40000 share an edge; faces 0 and 1 share another; one boundary half-edge.
+    std::vector<uint32_t> twin(3 * 40001, kNone);
+    twin[0] = 3 * 40000, twin[3 * 40000] = 0;
+    twin[1] = 3, twin[3] = 1;
+    EXPECT_DOUBLE_EQ(far_neighbour_share(twin, 32768), 0.5);
+    EXPECT_DOUBLE_EQ(far_neighbour_share(twin, 40001), 0.0);
+    EXPECT_DOUBLE_EQ(far_neighbour_share(std::vector<uint32_t>(6, kNone), 1), 0.0);
+}
+
+class ShuffledLarge : public EngineTest {};
+
+// 2 * 363 * 363 = 263538 faces: above the size from which stripify() reorders.
+TEST_P(ShuffledLarge, ReorderedStripVerifiesWithTheCallersFaces) {
+    TriangleSoup s = make_torus(363, 363);
+    shuffle_faces(s, 11);
+    PipelineOptions o;
+    o.strip = opts();
+    o.self_check = true;
+    const PipelineResult r = stripify(s, o);
+    EXPECT_EQ(r.face_origin.size(), s.triangles.size()) << "the shuffled soup was not reordered";
+    EXPECT_TRUE(parents_hold_their_faces(s, r.arrays));
+    const VerifyReport rep = verify(verify_input(s, r.arrays, r.indices));
+    EXPECT_TRUE(rep.ok()) << rep.to_string();
+}
+
+TEST_P(ShuffledLarge, OrderedSoupIsLeftAsItIs) {
+    const TriangleSoup s = make_torus(363, 363);
+    PipelineOptions o;
+    o.strip = opts();
+    const PipelineResult r = stripify(s, o);
+    EXPECT_TRUE(r.face_origin.empty());
+}
+
+TEST_P(ShuffledLarge, SeveralComponentsAndAttributesFollowTheirFaces) {
+    TriangleSoup s = make_torus(300, 300);
+    const TriangleSoup b = make_torus(40, 40);
+    const auto base = static_cast<uint32_t>(s.points.size());
+    for (Point3 p : b.points) s.points.push_back({p[0] + 10, p[1], p[2]});
+    for (Triangle t : b.triangles) s.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+    VertexAttribute id;
+    id.name = "_ID";
+    id.components = 1;
+    for (size_t v = 0; v < s.points.size(); ++v) id.values.push_back(static_cast<double>(v));
+    s.attributes.push_back(id);
+    shuffle_faces(s, 5);
+    PipelineOptions o;
+    o.strip = opts();
+    o.self_check = true;
+    const PipelineResult r = stripify(s, o);
+    EXPECT_EQ(r.components.size(), 2u);
+    EXPECT_FALSE(r.face_origin.empty());
+    EXPECT_TRUE(parents_hold_their_faces(s, r.arrays));
+    for (size_t v = 0; v < s.points.size(); ++v) ASSERT_EQ(r.arrays.attributes.at(0).values.at(v), static_cast<double>(v));
+    const VerifyReport rep = verify(verify_input(s, r.arrays, r.indices));
+    EXPECT_TRUE(rep.ok()) << rep.to_string();
+}
+
+INSTANTIATE_TEST_SUITE_P(Engines, ShuffledLarge, kBothEngines, engine_test_name);
+
+}  // namespace
+}  // namespace singlestrip
