@@ -8,8 +8,10 @@
 
 #include "../src/algo/face_order.hpp"
 #include "fixtures.hpp"
+#include "singlestrip/errors.hpp"
 #include "singlestrip/mesh.hpp"
 #include "singlestrip/pipeline.hpp"
+#include "singlestrip/validate.hpp"
 #include "singlestrip/verify.hpp"
 #include "strip_check.hpp"
 
@@ -63,14 +65,64 @@ TEST(FaceOrder, NonFiniteAndFlatPointsStillGiveAPermutation) {
     EXPECT_TRUE(std::all_of(seen.begin(), seen.end(), [](char c) { return c == 1; }));
 }
 
-TEST(FaceOrder, FarNeighbourShare) {
-    // Faces 0 and 40000 share an edge; faces 0 and 1 share another; one boundary half-edge.
-    std::vector<uint32_t> twin(3 * 40001, kNone);
-    twin[0] = 3 * 40000, twin[3 * 40000] = 0;
-    twin[1] = 3, twin[3] = 1;
-    EXPECT_DOUBLE_EQ(far_neighbour_share(twin, 32768), 0.5);
-    EXPECT_DOUBLE_EQ(far_neighbour_share(twin, 40001), 0.0);
-    EXPECT_DOUBLE_EQ(far_neighbour_share(std::vector<uint32_t>(6, kNone), 1), 0.0);
+TEST(FaceOrder, OnlyLargeScatteredSoupsAreReordered) {
+    TriangleSoup s = make_torus(363, 363);  // 263538 faces, written row by row
+    EXPECT_TRUE(locality_order(s).empty());
+    shuffle_faces(s, 3);
+    EXPECT_EQ(locality_order(s).size(), s.triangles.size());
+    TriangleSoup small = make_torus(300, 300);
+    shuffle_faces(small, 3);
+    EXPECT_TRUE(locality_order(small).empty());
+    s.triangles[5][1] = static_cast<uint32_t>(s.points.size());  // out of range: left to the checks
+    EXPECT_TRUE(locality_order(s).empty());
+}
+
+/// A large shuffled torus with two faces turned the wrong way round.
+TriangleSoup shuffled_with_flips() {
+    TriangleSoup s = make_torus(363, 363);
+    shuffle_faces(s, 9);
+    std::swap(s.triangles[17][1], s.triangles[17][2]);
+    std::swap(s.triangles[40000][1], s.triangles[40000][2]);
+    return s;
+}
+
+std::string refusal(const TriangleSoup& s, bool locality) {
+    try {
+        prepare_soup_components(s, PrepareOptions{false, locality}, "t.off");
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "accepted";
+}
+
+TEST(FaceOrder, RefusalNamesTheGivenFaces) {
+    const TriangleSoup s = shuffled_with_flips();
+    const std::string plain = refusal(s, false);
+    EXPECT_NE(plain, "accepted");
+    EXPECT_EQ(refusal(s, true), plain);
+}
+
+TEST(FaceOrder, ReorderedSoupIsTheGivenOneOrientedAndNumberedAlike) {
+    const TriangleSoup s = shuffled_with_flips();
+    const PreparedSoup given = prepare_soup_components(s, PrepareOptions{true, false}, "t.off");
+    const PreparedSoup local = prepare_soup_components(s, PrepareOptions{true, true}, "t.off");
+    ASSERT_EQ(local.face_origin.size(), s.triangles.size());
+    EXPECT_EQ(local.num_components, given.num_components);
+    for (size_t i = 0; i < local.face_origin.size(); ++i) {
+        ASSERT_EQ(local.soup.triangles[i], given.soup.triangles[local.face_origin[i]]) << i;
+        ASSERT_EQ(local.component[i], given.component[local.face_origin[i]]) << i;
+    }
+}
+
+TEST(FaceOrder, OrientationTieKeepsTheGivenLowestFace) {
+    TriangleSoup s = make_torus(363, 363);
+    for (size_t f = 0; f < s.triangles.size() / 2; ++f) std::swap(s.triangles[f][1], s.triangles[f][2]);
+    shuffle_faces(s, 21);
+    const PreparedSoup given = prepare_soup_components(s, PrepareOptions{true, false}, "t.off");
+    const PreparedSoup local = prepare_soup_components(s, PrepareOptions{true, true}, "t.off");
+    ASSERT_EQ(local.face_origin.size(), s.triangles.size());
+    for (size_t i = 0; i < local.face_origin.size(); ++i)
+        ASSERT_EQ(local.soup.triangles[i], given.soup.triangles[local.face_origin[i]]) << i;
 }
 
 class ShuffledLarge : public EngineTest {};

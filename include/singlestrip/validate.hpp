@@ -37,6 +37,10 @@ struct PrepareOptions {
     /// orientation of the majority of its faces; a tie keeps its lowest-numbered face's) instead
     /// of reporting inconsistent orientation.
     bool orient = false;
+    /// prepare_soup_components() only: a large soup whose faces have no order (shuffled) comes
+    /// back in a Z-order of its face centroids, for the cache (PreparedSoup::face_origin). The
+    /// checks, messages and orientation are those of the given order.
+    bool locality = false;
 };
 
 /// Checks (and with opt.orient, re-orients) `soup`; returns it ready for Mesh::from_soup().
@@ -52,10 +56,9 @@ struct PreparedSoup {
     TriangleSoup soup;
     std::vector<uint32_t> component;  ///< per face: its component, 0 .. num_components - 1
     uint32_t num_components = 0;
-    /// Share of interior edges whose two faces are kFarFaces or more apart in the face order
-    /// (near 1 when the faces were shuffled): stripify() reorders such soups for locality.
-    double far_neighbours = 0.0;
-    static constexpr uint32_t kFarFaces = 32768;
+    /// With PrepareOptions::locality, when the faces were reordered: the given soup's face of
+    /// each face of `soup`. Empty: same order as given.
+    std::vector<uint32_t> face_origin;
 };
 
 /// prepare_soup() that also gives the components from the same analysis, so a caller that

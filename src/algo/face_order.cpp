@@ -11,7 +11,7 @@ namespace singlestrip {
 namespace {
 
 constexpr uint32_t kBitsPerAxis = 10;
-constexpr uint32_t kDigitBits = 15;  ///< two counting-sort passes over a 30-bit code
+constexpr uint32_t kDigitBits = 10;  ///< three counting-sort passes over a 30-bit code (1024 buckets stay in cache)
 
 /// The bits of x (kBitsPerAxis of them) spread to every third bit.
 uint32_t spread3(uint32_t x) {
@@ -54,29 +54,42 @@ std::vector<uint32_t> morton_codes(const std::vector<Point3>& points, const std:
 }  // namespace
 
 std::vector<uint32_t> spatial_face_order(const std::vector<Point3>& points, const std::vector<Triangle>& triangles) {
-    const std::vector<uint32_t> code = morton_codes(points, triangles);
     const size_t nf = triangles.size();
-    std::vector<uint32_t> order(nf), next(nf);
-    for (size_t f = 0; f < nf; ++f) order[f] = static_cast<uint32_t>(f);
-    for (uint32_t shift = 0; shift < 3 * kBitsPerAxis; shift += kDigitBits) {
-        std::vector<uint32_t> start((1u << kDigitBits) + 1, 0);
-        auto digit = [&](uint32_t f) { return (code[f] >> shift) & ((1u << kDigitBits) - 1); };
-        for (uint32_t f : order) ++start[digit(f) + 1];
-        for (size_t d = 1; d < start.size(); ++d) start[d] += start[d - 1];
-        for (uint32_t f : order) next[start[digit(f)]++] = f;
-        order.swap(next);
+    // (code, face) in one word, so each pass reads its keys in sequence.
+    std::vector<uint64_t> keys(nf), next(nf);
+    {
+        const std::vector<uint32_t> code = morton_codes(points, triangles);
+        for (size_t f = 0; f < nf; ++f) keys[f] = uint64_t{code[f]} << 32 | f;
     }
+    for (uint32_t shift = 32; shift < 32 + 3 * kBitsPerAxis; shift += kDigitBits) {
+        std::vector<size_t> start((size_t{1} << kDigitBits) + 1, 0);
+        auto digit = [&](uint64_t k) { return static_cast<size_t>(k >> shift) & ((size_t{1} << kDigitBits) - 1); };
+        for (uint64_t k : keys) ++start[digit(k) + 1];
+        for (size_t d = 1; d < start.size(); ++d) start[d] += start[d - 1];
+        for (uint64_t k : keys) next[start[digit(k)]++] = k;
+        keys.swap(next);
+    }
+    std::vector<uint32_t> order(nf);
+    for (size_t i = 0; i < nf; ++i) order[i] = static_cast<uint32_t>(keys[i]);
     return order;
 }
 
-double far_neighbour_share(const std::vector<uint32_t>& twin, uint32_t distance) {
-    uint64_t interior = 0, far = 0;
-    for (size_t h = 0; h < twin.size(); ++h) {
-        if (twin[h] == kNone || twin[h] < h) continue;
-        ++interior;
-        far += twin[h] / 3 - h / 3 >= distance ? 1 : 0;
+std::vector<uint32_t> locality_order(const TriangleSoup& soup) {
+    constexpr size_t kMinFaces = size_t{1} << 18;
+    constexpr uint32_t kFar = 32768;        ///< vertex numbers this far apart: not one sweep
+    constexpr double kMaxScattered = 0.25;  ///< a sweep's rows jump about once a row
+    const auto& t = soup.triangles;
+    if (t.size() < kMinFaces) return {};
+    size_t scattered = 0;
+    uint32_t last = 0;
+    for (size_t f = 0; f < t.size(); ++f) {
+        if (std::max({t[f][0], t[f][1], t[f][2]}) >= soup.points.size()) return {};
+        const uint32_t low = std::min({t[f][0], t[f][1], t[f][2]});
+        scattered += f > 0 && (low > last ? low - last : last - low) >= kFar ? 1 : 0;
+        last = low;
     }
-    return interior ? static_cast<double>(far) / static_cast<double>(interior) : 0.0;
+    if (static_cast<double>(scattered) <= kMaxScattered * static_cast<double>(t.size())) return {};
+    return spatial_face_order(soup.points, t);
 }
 
 }  // namespace singlestrip

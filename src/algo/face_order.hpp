@@ -14,12 +14,13 @@ namespace singlestrip {
 /// Faces of `triangles` by the Morton code of their centroids on a 1024^3 grid over the
 /// points' bounding box, ties in face order: result[i] = the face that goes to position i.
 /// \pre every vertex index is < points.size(). Non-finite coordinates count as the box's low
-/// corner. Two counting-sort passes: O(F), 16 bytes a face of scratch.
+/// corner. Three counting-sort passes: O(F), 20 bytes a face of scratch.
 std::vector<uint32_t> spatial_face_order(const std::vector<Point3>& points, const std::vector<Triangle>& triangles);
 
-/// Share of the interior edges (twin[h] != kNone, h = 3f + k) whose two faces are at least
-/// `distance` apart in face order: near 1 for a shuffled soup, near 0 for a file written by
-/// sweeping its surface. O(F).
-double far_neighbour_share(const std::vector<uint32_t>& twin, uint32_t distance);
+/// The order to strip a large soup in when its face order has no locality, else empty. A soup
+/// is judged by its consecutive faces: in a file written by sweeping its surface their lowest
+/// vertices are close in number, in a shuffled one they are not. Empty below 2^18 faces (the
+/// engines' per-face arrays then stay in cache) or when a vertex index is out of range. O(F).
+std::vector<uint32_t> locality_order(const TriangleSoup& soup);
 
 }  // namespace singlestrip

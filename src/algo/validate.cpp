@@ -64,6 +64,7 @@ struct ProblemList {
 /// Everything diagnose_soup, mesh_info and prepare_soup need, computed once.
 struct Analysis {
     const TriangleSoup& soup;
+    const std::vector<uint32_t>* origin_;
     std::size_t nf = 0, nv = 0;
     std::vector<char> usable;    // face in range and with three distinct vertices
     std::vector<uint32_t> twin;  // half-edge 3f+k -> its partner on a 2-face edge, else kNone
@@ -75,7 +76,12 @@ struct Analysis {
     std::vector<uint64_t> component_sizes;
     bool orientable = true, oriented = true;
 
-    explicit Analysis(const TriangleSoup& s) : soup(s), nf(s.triangles.size()), nv(s.points.size()) { run(); }
+    /// origin: the given face of each face when the soup was reordered (orientation ties and
+    /// component numbers then follow the given order).
+    explicit Analysis(const TriangleSoup& s, const std::vector<uint32_t>* origin = nullptr)
+        : soup(s), origin_(origin), nf(s.triangles.size()), nv(s.points.size()) {
+        run();
+    }
 
     /// Face number for messages: the triangle, and for a file with polygons the file's polygon
     /// (face numbers count triangles after fan triangulation; the user knows the file's faces).
@@ -255,10 +261,16 @@ struct Analysis {
             }
             std::size_t flips = 0;
             for (uint32_t f : queue) flips += flip[f] == 1 ? 1 : 0;
-            if (2 * flips > queue.size())
+            if (2 * flips > queue.size() || (2 * flips == queue.size() && flip[given_lowest(queue)] == 1))
                 for (uint32_t f : queue) flip[f] = static_cast<int8_t>(1 - flip[f]);
         }
         if (!orientable) oriented = false;
+    }
+
+    /// The face of `faces` that comes first in the given order (faces[0] unless reordered).
+    uint32_t given_lowest(const std::vector<uint32_t>& faces) const {
+        if (!origin_) return faces[0];
+        return *std::min_element(faces.begin(), faces.end(), [&](uint32_t a, uint32_t b) { return (*origin_)[a] < (*origin_)[b]; });
     }
 
     /// After the faces were flipped by `flip` (orientable soup only).
@@ -339,17 +351,37 @@ long long apply_flips(TriangleSoup& soup, const std::vector<int8_t>& flip) {
     return flipped;
 }
 
-/// Components numbered 0.. in the order of their lowest face; unusable faces get kNone.
+/// Components numbered 0.. in the order of their lowest face (of the given order when the
+/// soup was reordered); unusable faces get kNone.
 std::vector<uint32_t> number_components(const Analysis& a, uint32_t* count) {
     std::vector<uint32_t> id(a.nf, kNone), of_root(a.nf, kNone);
     uint32_t next = 0;
-    for (std::size_t f = 0; f < id.size(); ++f)
-        if (a.comp[f] != kNone) {
-            if (of_root[a.comp[f]] == kNone) of_root[a.comp[f]] = next++;
-            id[f] = of_root[a.comp[f]];
-        }
+    auto visit = [&](std::size_t f) {
+        if (a.comp[f] == kNone) return;
+        if (of_root[a.comp[f]] == kNone) of_root[a.comp[f]] = next++;
+        id[f] = of_root[a.comp[f]];
+    };
+    if (a.origin_) {
+        std::vector<uint32_t> at(a.nf);  // given face -> its face here
+        for (std::size_t f = 0; f < a.nf; ++f) at[(*a.origin_)[f]] = static_cast<uint32_t>(f);
+        for (uint32_t f : at) visit(f);
+    } else {
+        for (std::size_t f = 0; f < a.nf; ++f) visit(f);
+    }
     *count = next;
     return id;
+}
+
+/// The faces of `soup` put in `order` (order[i]: the face that goes to position i), or back.
+void permute_faces(TriangleSoup& soup, const std::vector<uint32_t>& order, bool back) {
+    auto apply = [&](auto& a) {
+        if (a.empty()) return;
+        std::remove_reference_t<decltype(a)> b(a.size());
+        for (size_t i = 0; i < order.size(); ++i) (back ? b[order[i]] : b[i]) = a[back ? i : order[i]];
+        a = std::move(b);
+    };
+    apply(soup.triangles);
+    apply(soup.source_polygon);
 }
 
 }  // namespace
@@ -375,21 +407,27 @@ long long orient_soup(TriangleSoup& soup) {
 }
 
 PreparedSoup prepare_soup_components(TriangleSoup soup, const PrepareOptions& opt, const std::string& filename_for_messages) {
+    PreparedSoup out;
+    if (opt.locality) out.face_origin = locality_order(soup);
+    const bool reordered = !out.face_origin.empty();
+    if (reordered) permute_faces(soup, out.face_origin, false);
     // One analysis serves every step: flipping faces by the BFS result changes nothing the
     // analysis found except the orientation findings, which it makes consistent (every 2-face
     // edge then has flip[f] xor flip[g] == same-direction, so it runs opposite ways), and
     // leaves the components as they were. A non-orientable soup is left as is and reported
     // with everything else.
-    Analysis a(soup);
-    if (opt.orient && a.orientable && !a.oriented) {
-        apply_flips(soup, a.flip);
-        a.mark_consistently_oriented();
+    Analysis a(soup, reordered ? &out.face_origin : nullptr);
+    const bool orient = opt.orient && a.orientable && !a.oriented;
+    if (orient) a.mark_consistently_oriented();
+    if (a.total_problems() > 0) {
+        if (reordered) {  // a refusal names faces as given: analyse the given order again
+            permute_faces(soup, out.face_origin, true);
+            return prepare_soup_components(std::move(soup), PrepareOptions{opt.orient, false}, filename_for_messages);
+        }
+        throw InputError(join_problems(a.problems(), a.total_problems(), filename_for_messages));
     }
-    auto ps = a.problems();
-    if (!ps.empty()) throw InputError(join_problems(ps, a.total_problems(), filename_for_messages));
-    PreparedSoup out;
+    if (orient) apply_flips(soup, a.flip);
     out.component = number_components(a, &out.num_components);
-    out.far_neighbours = far_neighbour_share(a.twin, PreparedSoup::kFarFaces);
     out.soup = std::move(soup);
     return out;
 }

@@ -5,7 +5,6 @@
 #include <string>
 #include <utility>
 
-#include "algo/face_order.hpp"
 #include "components.hpp"
 #include "core/soup_edges.hpp"
 #include "singlestrip/attributes.hpp"
@@ -130,28 +129,17 @@ void warn_unwelded(PipelineResult& r, uint32_t components) {
                          std::to_string(components) + " components may be one surface; --weld (or --repair) merges them");
 }
 
-/// Faces of a large soup with no order (far_neighbours) go along a Z-order curve, so the
-/// engines' steps from face to neighbour stay in cache; face_origin keeps the parents the
-/// caller's. Not with a seed face: that names a face of the caller's order.
-void improve_locality(PipelineResult& r, const PreparedSoup& prepared, std::vector<uint32_t>& comp) {
-    constexpr size_t kMinFaces = size_t{1} << 18;  // below this the per-face arrays stay in cache
-    constexpr double kMaxFarShare = 0.25;
-    TriangleSoup& s = r.input;
-    if (s.triangles.size() < kMinFaces || prepared.far_neighbours <= kMaxFarShare || r.options.strip.seed_face) return;
-    const std::vector<uint32_t> order = spatial_face_order(s.points, s.triangles);
-    auto permute = [&](auto& a) {
-        if (a.empty()) return;
-        std::remove_reference_t<decltype(a)> b(a.size());
-        for (size_t i = 0; i < order.size(); ++i) b[i] = a[order[i]];
-        a = std::move(b);
-    };
-    permute(s.triangles);
-    permute(s.source_polygon);
-    permute(comp);
-    if (r.face_origin.empty())
+/// prepare_soup_components() may have reordered the faces for the cache: parents then go
+/// through its face_origin, after repair's.
+void keep_face_origin(PipelineResult& r, const std::vector<uint32_t>& order) {
+    if (order.empty()) return;
+    if (r.face_origin.empty()) {
         r.face_origin = order;
-    else
-        permute(r.face_origin);
+        return;
+    }
+    std::vector<uint32_t> composed(order.size());
+    for (size_t i = 0; i < order.size(); ++i) composed[i] = r.face_origin[order[i]];
+    r.face_origin = std::move(composed);
 }
 
 /// Output vertices get the input's attributes (midpoints blended inside their parent face);
@@ -230,8 +218,12 @@ PipelineResult stripify(TriangleSoup soup, const PipelineOptions& options, Pipel
     if (const std::string bad = attribute_problem(soup.attributes, soup.points.size()); !bad.empty())
         throw InputError(options.name + ": " + bad);
     soup = pre_repair(std::move(soup), options, r);
-    PreparedSoup prepared = prepare_soup_components(std::move(soup), PrepareOptions{options.orient || options.repair}, options.name);
+    // A seed face names a face of the given order: no reordering then.
+    const PrepareOptions prep{options.orient || options.repair, !options.strip.seed_face};
+    PreparedSoup prepared = prepare_soup_components(std::move(soup), prep, options.name);
     r.input = std::move(prepared.soup);
+    keep_face_origin(r, prepared.face_origin);
+    prepared.face_origin = std::vector<uint32_t>();
     std::vector<ConstraintEdge>& constraints = r.options.strip.constraint_edges;
     if (options.constraints_file) {
         enter(stage, PipelineStage::Constraints);
@@ -245,7 +237,6 @@ PipelineResult stripify(TriangleSoup soup, const PipelineOptions& options, Pipel
     }
     const uint32_t count = prepared.num_components;
     std::vector<uint32_t> comp = std::move(prepared.component);
-    improve_locality(r, prepared, comp);
     warn_unwelded(r, count);
     r.seconds.build = clock.lap();
     if (count <= 1) {
