@@ -182,8 +182,12 @@ EngineRun measure_engine(const Spec& spec, ss::StripEngine engine, const std::st
             if (!spec.walls_path.empty()) options.constraint_edges = ss::as_constraints(read_walls(spec.walls_path));
             tr.push_back(seconds_since(t));
             t = Clock::now();
+            // As stripify() does: a large shuffled soup is checked and stripped in a Z-order.
+            std::vector<uint32_t> origin;
             try {
-                soup = ss::prepare_soup(std::move(soup), ss::PrepareOptions{true}, spec.path);
+                ss::PreparedSoup prepared = ss::prepare_soup_components(std::move(soup), ss::PrepareOptions{true, true}, spec.path);
+                soup = std::move(prepared.soup);
+                origin = std::move(prepared.face_origin);
             } catch (const ss::InputError& e) {
                 r.status = 1;
                 set_message(r, e.what());
@@ -207,6 +211,8 @@ EngineRun measure_engine(const Spec& spec, ss::StripEngine engine, const std::st
             tb.push_back(seconds_since(t));
             t = Clock::now();
             ss::StripArrays arr = ss::strip_arrays(res);
+            for (uint32_t& p : arr.parent)
+                if (!origin.empty()) p = origin[p];
             std::vector<uint32_t> indices = ss::encode_triangle_strip(arr.faces);
             te.push_back(seconds_since(t));
             if (rep == 0) {

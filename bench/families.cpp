@@ -51,6 +51,21 @@ std::vector<Family> awkward_families() {
             f.sizes.push_back({n, [n, closed] { return Generated{testing::make_many_centres(static_cast<uint32_t>(n), 8, closed), {}}; }});
         out.push_back(std::move(f));
     }
+    // Files with no order (issue 17): a torus whose faces, or whose vertices, were shuffled.
+    for (const bool faces : {true, false}) {
+        Family f{faces ? "shuffled_faces" : "shuffled_vertices", {}, false, false};
+        for (const uint64_t n : {uint64_t{10000}, uint64_t{100000}, uint64_t{1000000}})
+            f.sizes.push_back({n, [n, faces] {
+                                   const auto side = static_cast<uint32_t>(std::lround(std::sqrt(static_cast<double>(n) / 2)));
+                                   TriangleSoup s = make_torus(side, side);
+                                   if (faces)
+                                       shuffle_faces(s, 17);
+                                   else
+                                       shuffle_vertices(s, 17);
+                                   return Generated{std::move(s), {}};
+                               }});
+        out.push_back(std::move(f));
+    }
     return out;
 }
 
