@@ -120,7 +120,9 @@ void MatchingBuilder::split_ears() {
 }
 
 // Passable edges whose removal disconnects the faces (bridges of the dual graph), by an
-// iterative lowpoint search. A strip crosses such an edge exactly once, so the two sides must each
+// iterative lowpoint search that keeps no stack (parent edges lead back up, next_side says where
+// a face's scan resumes: 17 bytes a face; a stack of frames was the engine's memory peak on long
+// dual paths). A strip crosses such an edge exactly once, so the two sides must each
 // be covered by a path ending at it; split, the edge becomes two crossings (the four children
 // form a ring across it), which removes that parity constraint: a serpentine corridor of odd
 // length between walls has no 2-factor until its one-edge gaps are split.
@@ -129,40 +131,33 @@ std::vector<HalfedgeId> MatchingBuilder::dual_bridges() const {
     constexpr uint32_t kUnseen = 0;  // order is 1-based
     IdVector<FaceId, uint32_t> order(nf, kUnseen), low(nf, 0), size(nf, 1);
     IdVector<FaceId, HalfedgeId> parent_edge(nf, kNone);
+    IdVector<FaceId, uint8_t> next_side(nf, 0);
     std::vector<HalfedgeId> bridges;
-    struct Frame {
-        FaceId f;
-        uint32_t k;
-    };
-    std::vector<Frame> stack;
     uint32_t time = 1;
     for (FaceId r : mesh_.faces()) {
         if (order[r] != kUnseen) continue;
         order[r] = low[r] = time++;
-        stack.push_back({r, 0});
-        while (!stack.empty()) {
-            Frame& fr = stack.back();
-            if (fr.k < 3) {
-                const HalfedgeId h = Mesh::halfedge(fr.f, fr.k++);
-                if (!passable(h) || mesh_.twin(h) == parent_edge[fr.f]) continue;
+        for (FaceId f = r;;) {
+            if (next_side[f] < 3) {
+                const HalfedgeId h = Mesh::halfedge(f, next_side[f]++);
+                if (!passable(h) || mesh_.twin(h) == parent_edge[f]) continue;
                 const FaceId g = across(h);
                 if (order[g] == kUnseen) {
                     order[g] = low[g] = time++;
                     parent_edge[g] = h;
-                    stack.push_back({g, 0});
+                    f = g;
                 } else {
-                    low[fr.f] = std::min(low[fr.f], order[g]);
+                    low[f] = std::min(low[f], order[g]);
                 }
                 continue;
             }
-            const FaceId f = fr.f;
-            stack.pop_back();
-            if (parent_edge[f] == kNone) continue;
+            if (parent_edge[f] == kNone) break;
             const FaceId p = Mesh::face(parent_edge[f]);
             low[p] = std::min(low[p], low[f]);
             size[p] += size[f];
             // A small side (a spike, a pendant ring) is better joined as a loop later.
             if (low[f] > order[p] && std::min(size[f], nf - size[f]) >= kMinBridgeSide) bridges.push_back(parent_edge[f]);
+            f = p;
         }
     }
     return bridges;
