@@ -137,9 +137,15 @@ private:
     bool chain_reaches_branch(FaceId f, FaceId from) const;
     void match_fans();
     static constexpr uint32_t kFanValence = 32;  ///< fans of this many faces or more: one loop
-    void match_patterned(bool mates);
+    /// A candidate matching: matched edges and the quotas still open.
+    struct Pattern {
+        EdgeFlags matched;
+        IdVector<FaceId, uint8_t> quota;
+    };
+    static constexpr uint32_t kParallelPattern = 16384;  ///< faces from which the two greedy orders run at once
+    void match_patterned(bool mates, Pattern& p);
     void choose_pattern();
-    [[nodiscard]] long pattern_cost() const;
+    [[nodiscard]] long pattern_cost(const Pattern& p) const;
     bool augment_from(FaceId u, IdVector<FaceId, uint32_t>& stamp, uint32_t mark, size_t budget);
     // Augmenting path from one short face through blossoms (matching_blossom.cpp).
     enum class Search { Found, NoPath, Unknown };

@@ -10,8 +10,10 @@
 // This file: pins, ear and bridge splits, the patterned matching, run() and the growth fallback.
 #include <algorithm>
 #include <cstdint>
+#include <exception>
 #include <optional>
 #include <string>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -225,37 +227,53 @@ void MatchingBuilder::match_fans() {
 
 // Swaps between faces of two crossed edges each, plus 8 per face left short (the repair of each
 // costs about that many: turbine.off, 39 short faces, 894 swaps).
-long MatchingBuilder::pattern_cost() const {
-    auto crossed = [&](HalfedgeId h) { return passable(h) && !matched_[h]; };
+long MatchingBuilder::pattern_cost(const Pattern& p) const {
+    auto crossed = [&](HalfedgeId h) { return passable(h) && !p.matched[h]; };
     long cost = 0;
     for (HalfedgeId h : mesh_.halfedges())
         if (crossed(h) && h < mesh_.twin(h)) cost += swap_test(h, crossed);
-    for (FaceId f : mesh_.faces()) cost += 8 * quota_[f];
+    for (FaceId f : mesh_.faces()) cost += 8 * p.quota[f];
     return cost;
 }
 
 // Two orders of the greedy: rows one after the other, or each face's mate queued at once (a
 // clean grid pattern, where the first order starts rows in arbitrary turns: knot.off 310 swaps
-// against 76). The one with the lower pattern_cost() is kept.
+// against 76). The one with the lower pattern_cost() is kept (rows on a tie). They only read the
+// mesh, so on a large mesh the second runs on another thread.
 void MatchingBuilder::choose_pattern() {
-    const EdgeFlags matched0 = matched_;
-    const IdVector<FaceId, uint8_t> quota0 = quota_;
-    match_patterned(false);
-    const long cost_rows = pattern_cost();
-    EdgeFlags matched_rows = std::move(matched_);
-    IdVector<FaceId, uint8_t> quota_rows = std::move(quota_);
-    matched_ = matched0;
-    quota_ = quota0;
-    match_patterned(true);
-    if (pattern_cost() < cost_rows) return;
-    matched_ = std::move(matched_rows);
-    quota_ = std::move(quota_rows);
+    Pattern rows{matched_, quota_}, mates{std::move(matched_), std::move(quota_)};
+    long cost_rows = 0, cost_mates = 0;
+    auto run_mates = [&] {
+        match_patterned(true, mates);
+        cost_mates = pattern_cost(mates);
+    };
+    if (mesh_.num_faces() >= kParallelPattern) {
+        std::exception_ptr failure;
+        std::thread other([&] {
+            try {
+                run_mates();
+            } catch (...) {
+                failure = std::current_exception();
+            }
+        });
+        match_patterned(false, rows);
+        cost_rows = pattern_cost(rows);
+        other.join();
+        if (failure) std::rethrow_exception(failure);
+    } else {
+        match_patterned(false, rows);
+        cost_rows = pattern_cost(rows);
+        run_mates();
+    }
+    Pattern& best = cost_mates < cost_rows ? mates : rows;
+    matched_ = std::move(best.matched);
+    quota_ = std::move(best.quota);
 }
 
 // Greedy matching carried face to face in breadth-first order: across a crossed edge (u, v),
 // if this face's matched edge touches u, the neighbour's should touch v — then the two turns
 // alternate and the GL strip needs no swap there.
-void MatchingBuilder::match_patterned(bool mates) {
+void MatchingBuilder::match_patterned(bool mates, Pattern& p) {
     const uint32_t nf = mesh_.num_faces();
     IdVector<FaceId, HalfedgeId> pref(nf, kNone);
     std::vector<FaceId> queue, critical;
@@ -263,20 +281,20 @@ void MatchingBuilder::match_patterned(bool mates) {
     // Karp-Sipser: a face left with one free neighbour takes it at once, before the pattern
     // asks, so few faces are left short (each costs an augmenting path, which breaks the pattern).
     IdVector<FaceId, uint8_t> free_n(nf, 0);
-    auto wants = [&](HalfedgeId h) { return passable(h) && !matched_[h] && quota_[across(h)] > 0; };
+    auto wants = [&](HalfedgeId h) { return passable(h) && !p.matched[h] && p.quota[across(h)] > 0; };
     for (FaceId f : mesh_.faces())
-        if (quota_[f] > 0)
+        if (p.quota[f] > 0)
             for (HalfedgeId h : sides(f)) free_n[f] += wants(h);
     for (FaceId f : mesh_.faces())
-        if (quota_[f] > 0 && free_n[f] == 1) critical.push_back(f);
+        if (p.quota[f] > 0 && free_n[f] == 1) critical.push_back(f);
     auto match = [&](HalfedgeId h) {
-        set_pair(matched_, h, 1);
+        set_pair(p.matched, h, 1);
         for (FaceId x : {Mesh::face(h), across(h)}) {
-            if (--quota_[x] > 0) continue;
+            if (--p.quota[x] > 0) continue;
             for (HalfedgeId e : sides(x)) {
                 if (!passable(e)) continue;
                 const FaceId y = across(e);
-                if (quota_[y] > 0 && free_n[y] > 0 && --free_n[y] == 1) critical.push_back(y);
+                if (p.quota[y] > 0 && free_n[y] > 0 && --free_n[y] == 1) critical.push_back(y);
             }
         }
     };
@@ -284,7 +302,7 @@ void MatchingBuilder::match_patterned(bool mates) {
         while (!critical.empty()) {
             const FaceId x = critical.back();
             critical.pop_back();
-            for (uint32_t k = 0; k < 3 && quota_[x] > 0; ++k)
+            for (uint32_t k = 0; k < 3 && p.quota[x] > 0; ++k)
                 if (wants(Mesh::halfedge(x, k))) match(Mesh::halfedge(x, k));
         }
     };
@@ -298,17 +316,17 @@ void MatchingBuilder::match_patterned(bool mates) {
             const FaceId f = queue[head];
             // The preferred edge first, then on round the face.
             HalfedgeId h = pref[f] != kNone ? pref[f] : Mesh::halfedge(f, 0);
-            for (uint32_t i = 0; i < 3 && quota_[f] > 0; ++i, h = Mesh::next(h))
+            for (uint32_t i = 0; i < 3 && p.quota[f] > 0; ++i, h = Mesh::next(h))
                 if (wants(h)) match(h), drain();
             HalfedgeId m = kNone;  // the edge this face does not cross
             for (HalfedgeId e : sides(f))
-                if (matched_[e] || !passable(e)) m = e;
+                if (p.matched[e] || !passable(e)) m = e;
             for (HalfedgeId e : sides(f)) {
-                if (mates && passable(e) && matched_[e] && !seen[across(e)]) {  // the mate's row next
+                if (mates && passable(e) && p.matched[e] && !seen[across(e)]) {  // the mate's row next
                     seen[across(e)] = 1;
                     queue.push_back(across(e));
                 }
-                if (!passable(e) || matched_[e]) continue;
+                if (!passable(e) || p.matched[e]) continue;
                 const FaceId g = across(e);
                 if (seen[g]) continue;
                 seen[g] = 1;
