@@ -53,6 +53,16 @@ singlestrip::test::ShellRun cli(const std::string& args) {
     return singlestrip::test::run_program(SINGLESTRIP_CLI_PATH, args);
 }
 
+/// `strip IN -o OUT`, then `verify IN OUT`, through the CLI; both must succeed. Returns the strip
+/// command's output (its notes).
+std::string strip_and_verify_cli(const std::string& in, const std::string& out) {
+    const auto [code, text] = cli("strip '" + in + "' -o '" + out + "'");
+    EXPECT_EQ(code, 0) << text;
+    const auto [vcode, vtext] = cli("verify '" + in + "' '" + out + "'");
+    EXPECT_EQ(vcode, 0) << vtext;
+    return text;
+}
+
 void write_file(const std::string& path, const std::string& text) {
     std::ofstream(path, std::ios::binary) << text;
 }
@@ -165,10 +175,7 @@ TEST(ObjAttributes, EveryOutputFormatWritesWhatItHoldsAndVerifies) {
     for (const char* name : {"o.obj", "o.ply", "o.glb", "o.gltf", "o.off"}) {
         SCOPED_TRACE(name);
         const std::string out = dir / name;
-        const auto [code, text] = cli("strip '" + in + "' -o '" + out + "'");
-        ASSERT_EQ(code, 0) << text;
-        const auto [vcode, vtext] = cli("verify '" + in + "' '" + out + "'");
-        EXPECT_EQ(vcode, 0) << vtext;
+        const std::string text = strip_and_verify_cli(in, out);
         EXPECT_EQ(text.find("has no place"), std::string::npos) << text;
         const TriangleSoup back = is_gltf_path(out) ? read_gltf_output(out) : read_mesh_file(out);
         ASSERT_EQ(back.points.size(), r.arrays.points.size());
@@ -267,10 +274,7 @@ TEST(PlyAttributes, VertexPropertiesAreReadCarriedAndWrittenBack) {
     for (const char* name : {"o.ply", "o.glb"}) {
         SCOPED_TRACE(name);
         const std::string out = dir / name;
-        const auto [code, text] = cli("strip '" + in + "' -o '" + out + "'");
-        ASSERT_EQ(code, 0) << text;
-        const auto [vcode, vtext] = cli("verify '" + in + "' '" + out + "'");
-        EXPECT_EQ(vcode, 0) << vtext;
+        strip_and_verify_cli(in, out);
         const TriangleSoup back = is_gltf_path(out) ? read_gltf_output(out) : read_mesh_file(out);
         ASSERT_EQ(back.attributes.size(), s.attributes.size() + (is_gltf_path(out) ? 1 : 0));  // + POSITION
         for (size_t i = 0; i < s.attributes.size(); ++i) {
@@ -303,10 +307,7 @@ TEST(GltfAttributes, SceneIntoPlyAndObjKeepsItsAttributes) {
     for (const char* name : {"o.ply", "o.obj"}) {
         SCOPED_TRACE(name);
         const std::string out = dir / name;
-        const auto [code, text] = cli("strip '" + in + "' -o '" + out + "'");
-        ASSERT_EQ(code, 0) << text;
-        const auto [vcode, vtext] = cli("verify '" + in + "' '" + out + "'");
-        EXPECT_EQ(vcode, 0) << vtext;
+        strip_and_verify_cli(in, out);
         const TriangleSoup back = read_mesh_file(out);
         const VertexAttribute* uv = find_attribute(back.attributes, "TEXCOORD_0");
         ASSERT_NE(uv, nullptr);

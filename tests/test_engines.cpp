@@ -187,6 +187,19 @@ uint32_t between(std::mt19937_64& rng, uint32_t lo, uint32_t hi) {
     return lo + static_cast<uint32_t>(rng() % (hi - lo + 1));
 }
 
+/// The families drawn by two sizes (each from lo to lo + (hi - lo) * scale / 4), by kind.
+struct TwoSizes {
+    uint32_t kind;
+    const char* name;
+    TriangleSoup (*make)(uint32_t, uint32_t);
+    uint32_t lo1, hi1, lo2, hi2;
+};
+const TwoSizes kTwoSizes[] = {
+    {0, "make_grid_disk", make_grid_disk, 1, 14, 1, 14}, {1, "make_disk_with_holes", make_disk_with_holes, 1, 4, 1, 3},
+    {2, "make_annulus", make_annulus, 3, 20, 1, 5},      {4, "make_uv_sphere", make_uv_sphere, 3, 16, 2, 10},
+    {5, "make_torus", make_torus, 3, 16, 3, 9},          {11, "make_eared_grid", make_eared_grid, 1, 20, 1, 4},
+};
+
 /// A small random mesh of a random family; `walled` when its walls come with the family (then
 /// no edge flips, which would move the walls' edges).
 TriangleSoup random_family(std::mt19937_64& rng, std::string& recipe, Polylines& walls, uint32_t scale) {
@@ -195,63 +208,48 @@ TriangleSoup random_family(std::mt19937_64& rng, std::string& recipe, Polylines&
         recipe = std::move(name);
         return s;
     };
+    // make(args...) with its recipe "name(args, ...)" (the sizes are drawn before, in order).
+    auto made = [&](const char* name, auto make, auto... args) {
+        std::string call;
+        ((call += (call.empty() ? "" : ", ") + std::to_string(args)), ...);
+        return named(std::string(name) + "(" + call + ")", make(args...));
+    };
     auto sz = [&](uint32_t lo, uint32_t hi) { return between(rng, lo, lo + (hi - lo) * scale / 4); };
+    for (const TwoSizes& t : kTwoSizes)
+        if (t.kind == kind) {
+            const uint32_t a = sz(t.lo1, t.hi1), b = sz(t.lo2, t.hi2);
+            return made(t.name, t.make, a, b);
+        }
     switch (kind) {
-        case 0: {
-            const uint32_t nx = sz(1, 14), ny = sz(1, 14);
-            return named("make_grid_disk(" + std::to_string(nx) + ", " + std::to_string(ny) + ")", make_grid_disk(nx, ny));
-        }
-        case 1: {
-            const uint32_t k = sz(1, 4), r = sz(1, 3);
-            return named("make_disk_with_holes(" + std::to_string(k) + ", " + std::to_string(r) + ")", make_disk_with_holes(k, r));
-        }
-        case 2: {
-            const uint32_t a = sz(3, 20), r = sz(1, 5);
-            return named("make_annulus(" + std::to_string(a) + ", " + std::to_string(r) + ")", make_annulus(a, r));
-        }
         case 3: {
             const uint32_t s = between(rng, 0, scale >= 4 ? 3 : 2);
-            return named("make_icosphere(" + std::to_string(s) + ")", make_icosphere(s));
-        }
-        case 4: {
-            const uint32_t lon = sz(3, 16), lat = sz(2, 10);
-            return named("make_uv_sphere(" + std::to_string(lon) + ", " + std::to_string(lat) + ")", make_uv_sphere(lon, lat));
-        }
-        case 5: {
-            const uint32_t a = sz(3, 16), b = sz(3, 9);
-            return named("make_torus(" + std::to_string(a) + ", " + std::to_string(b) + ")", make_torus(a, b));
+            return made("make_icosphere", make_icosphere, s);
         }
         case 6: {
             const uint32_t g = between(rng, 0, 5), r = sz(1, 2);
-            return named("make_genus_surface(" + std::to_string(g) + ", " + std::to_string(r) + ")", make_genus_surface(g, r));
+            return made("make_genus_surface", make_genus_surface, g, r);
         }
         case 7: {
             const uint32_t g = between(rng, 1, 3), h = between(rng, 1, 4), r = sz(2, 3);
-            return named("make_genus_with_holes(" + std::to_string(g) + ", " + std::to_string(h) + ", " + std::to_string(r) + ")",
-                         make_genus_with_holes(g, h, r));
+            return made("make_genus_with_holes", make_genus_with_holes, g, h, r);
         }
         case 8: {
             const uint32_t k = sz(1, 60);
-            return named("make_fan(" + std::to_string(k) + ")", make_fan(k));
+            return made("make_fan", make_fan, k);
         }
         case 9: {
             const uint32_t k = sz(1, 60);
-            return named("make_corridor(" + std::to_string(k) + ")", make_corridor(k));
+            return made("make_corridor", make_corridor, k);
         }
         case 10: {
             const uint32_t k = sz(3, 80);
             const bool capped = rng() % 2;
             return named("make_cone(" + std::to_string(k) + (capped ? ", true)" : ", false)"), make_cone(k, capped));
         }
-        case 11: {
-            const uint32_t nx = sz(1, 20), ny = sz(1, 4);
-            return named("make_eared_grid(" + std::to_string(nx) + ", " + std::to_string(ny) + ")", make_eared_grid(nx, ny));
-        }
         case 12: {
             const uint32_t h = sz(0, 5), len = sz(2, 12);
-            if (rng() % 2)
-                return named("make_hole_corridors(" + std::to_string(h) + ", " + std::to_string(len) + ")", make_hole_corridors(h, len));
-            return named("make_slit_corridors(" + std::to_string(h) + ", " + std::to_string(len) + ")", make_slit_corridors(h, len));
+            if (rng() % 2) return made("make_hole_corridors", make_hole_corridors, h, len);
+            return made("make_slit_corridors", make_slit_corridors, h, len);
         }
         default: {
             const uint32_t n = sz(0, 5), len = sz(2, 12);

@@ -96,22 +96,23 @@ Grid grid(uint32_t m, uint32_t n, bool torus) {
     return g;
 }
 
-std::vector<uint32_t> row_cycle(const Grid& g, uint32_t j) {
+/// Row j (along i) or column i (along j) of the grid, as strip positions: a closed chain.
+std::vector<uint32_t> grid_cycle(const Grid& g, bool row, uint32_t k) {
     std::vector<uint32_t> c;
-    for (uint32_t i = 0; i < g.m; ++i) {
-        c.push_back(g.pos_of[g.upper(i, j)]);
-        c.push_back(g.pos_of[g.lower(i, j)]);
+    for (uint32_t t = 0; t < (row ? g.m : g.n); ++t) {
+        const uint32_t i = row ? t : k, j = row ? k : t;
+        c.push_back(g.pos_of[row ? g.upper(i, j) : g.lower(i, j)]);
+        c.push_back(g.pos_of[row ? g.lower(i, j) : g.upper(i, j)]);
     }
     return c;
 }
 
+std::vector<uint32_t> row_cycle(const Grid& g, uint32_t j) {
+    return grid_cycle(g, true, j);
+}
+
 std::vector<uint32_t> column_cycle(const Grid& g, uint32_t i) {
-    std::vector<uint32_t> c;
-    for (uint32_t j = 0; j < g.n; ++j) {
-        c.push_back(g.pos_of[g.lower(i, j)]);
-        c.push_back(g.pos_of[g.upper(i, j)]);
-    }
-    return c;
+    return grid_cycle(g, false, i);
 }
 
 /// The faces around output vertex v, as a closed chain (v interior).

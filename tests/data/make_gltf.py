@@ -122,6 +122,16 @@ gltf = {
 with open(os.path.join(D, "scene.gltf"), "w") as f:
     json.dump(gltf, f, indent=1)
 
+def write_glb(name, gltf, buf):
+    """A .glb: the JSON chunk padded with spaces, then the BIN chunk (buf, 4-byte aligned)."""
+    js = json.dumps(gltf).encode()
+    js += b" " * ((4 - len(js) % 4) % 4)
+    glb = struct.pack("<III", 0x46546C67, 2, 12 + 8 + len(js) + 8 + len(buf)) + struct.pack("<II", len(js), 0x4E4F534A) + js + \
+        struct.pack("<II", len(buf), 0x004E4942) + bytes(buf)
+    with open(os.path.join(D, name), "wb") as f:
+        f.write(glb)
+
+
 # The same scene as .glb (buffer in the BIN chunk, image in a buffer view).
 while len(buf) % 4:
     buf.append(0)
@@ -131,12 +141,7 @@ while len(buf) % 4:
     buf.append(0)
 gltf["images"] = [{"bufferView": len(views) - 1, "mimeType": "image/png"}]
 gltf["buffers"] = [{"byteLength": len(buf)}]
-js = json.dumps(gltf).encode()
-js += b" " * ((4 - len(js) % 4) % 4)
-glb = struct.pack("<III", 0x46546C67, 2, 12 + 8 + len(js) + 8 + len(buf)) + struct.pack("<II", len(js), 0x4E4F534A) + js + \
-    struct.pack("<II", len(buf), 0x004E4942) + bytes(buf)
-with open(os.path.join(D, "scene.glb"), "wb") as f:
-    f.write(glb)
+write_glb("scene.glb", gltf, buf)
 
 # A quantized grid (KHR_mesh_quantization): uint16 positions, normalised int8 normals, uint16
 # texture coordinates; the node's scale dequantizes the positions.
@@ -180,9 +185,4 @@ gltf = {
     "bufferViews": views,
     "buffers": [{"byteLength": len(buf)}],
 }
-js = json.dumps(gltf).encode()
-js += b" " * ((4 - len(js) % 4) % 4)
-glb = struct.pack("<III", 0x46546C67, 2, 12 + 8 + len(js) + 8 + len(buf)) + struct.pack("<II", len(js), 0x4E4F534A) + js + \
-    struct.pack("<II", len(buf), 0x004E4942) + bytes(buf)
-with open(os.path.join(D, "quantized.glb"), "wb") as f:
-    f.write(glb)
+write_glb("quantized.glb", gltf, buf)
