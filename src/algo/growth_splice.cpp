@@ -95,6 +95,8 @@ bool Builder::try_detour(RegionId region, FaceId anchor) {
     scan_credit_ -= std::min(scan_credit_, scratch_.size());
     const bool single = region_size_[region] == 1;
     for (const FaceId r1 : scratch_) {
+        // Unrolled as the other loops over a face's sides (GCC's size estimate falls just short).
+#pragma GCC unroll 3
         for (const HalfedgeId h : sides(r1)) {
             if (!passable(h)) continue;
             const FaceId x = mesh_.neighbor(h);

@@ -19,7 +19,8 @@ public:
             ++k_;
             return *this;
         }
-        friend constexpr bool operator==(iterator, iterator) noexcept = default;
+        // Both ends of a loop are of one face: k alone tells them apart (and lets loops unroll).
+        friend constexpr bool operator==(iterator a, iterator b) noexcept { return a.k_ == b.k_; }
 
     private:
         FaceId f_;
