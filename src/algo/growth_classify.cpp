@@ -1,6 +1,5 @@
 // singlestrip — the growth builder's classification of the next face as safe, bridge or
 // fundamental: the O(1) cavity test first, a bidirectional search only when it cannot tell.
-#include <algorithm>
 #include <cstdint>
 #include <string>
 
@@ -18,25 +17,25 @@ namespace singlestrip::growth {
 // valence. (A walk around V cost O(valence) per test: quadratic on a cone's apex; a walk capped at
 // 4096 steps answered "not connected" wrongly and a closed cone failed with "fundamental
 // triangle in a region without cycles".)
-bool Builder::fan_connects(uint32_t n, uint32_t ha, uint32_t hb, uint32_t r) const {
-    const uint32_t v = from_of(ha) == to_of(hb) ? from_of(ha) : to_of(ha);
+bool Builder::fan_connects(FaceId n, HalfedgeId ha, HalfedgeId hb, RegionId r) const {
+    const VertexId v = mesh_.from(ha) == mesh_.to(hb) ? mesh_.from(ha) : mesh_.to(ha);
     // a shares both its edges at V with N: N closes the fan, the path would go through N.
-    const bool connects = across(ha) != across(hb) && !rim_[v] && striped_at_[v] == 0;
+    const bool connects = mesh_.neighbor(ha) != mesh_.neighbor(hb) && !rim_[v] && striped_at_[v] == 0;
     if (opt_.validate_each_split && connects != fan_connects_walk(n, ha, hb, r))
-        throw InternalError("strip builder: cavity test disagrees with the walk around vertex " + std::to_string(v));
+        throw InternalError("strip builder: cavity test disagrees with the walk around vertex " + std::to_string(v.idx()));
     return connects;
 }
 
 // The same test by walking around V (O(valence)); a cross-check in tests (validate_each_split).
-bool Builder::fan_connects_walk(uint32_t n, uint32_t ha, uint32_t hb, uint32_t r) const {
-    const uint32_t v = from_of(ha) == to_of(hb) ? from_of(ha) : to_of(ha);
-    const uint32_t b = across(hb);
-    uint32_t g = twin_of(ha);  // in face a, incident to v
+bool Builder::fan_connects_walk(FaceId n, HalfedgeId ha, HalfedgeId hb, RegionId r) const {
+    const VertexId v = mesh_.from(ha) == mesh_.to(hb) ? mesh_.from(ha) : mesh_.to(ha);
+    const FaceId b = mesh_.neighbor(hb);
+    HalfedgeId g = mesh_.twin(ha);  // in face a, incident to v
     for (uint32_t guard = 0; guard <= mesh_.num_halfedges(); ++guard) {
-        const uint32_t other = from_of(g) == v ? prev_of(g) : next_of(g);
+        const HalfedgeId other = mesh_.from(g) == v ? Mesh::prev(g) : Mesh::next(g);
         if (!passable(other)) return false;
-        g = twin_of(other);
-        const uint32_t f = face_of(g);
+        g = mesh_.twin(other);
+        const FaceId f = Mesh::face(g);
         if (f == b) return true;
         if (f == n || !in_region(f, r)) return false;
     }
@@ -46,10 +45,10 @@ bool Builder::fan_connects_walk(uint32_t n, uint32_t ha, uint32_t hb, uint32_t r
 // Alternating search from a and from b through open faces of r, never entering n.
 // Met if they meet (connected), else the side that ran out first (IslandOfA or IslandOfB); that
 // side's faces are then in side_[0] or side_[1]. Cost O(size of the smaller island) when they are separated.
-Builder::SearchOutcome Builder::bidirectional_search(uint32_t n, uint32_t a, uint32_t b, uint32_t r, size_t budget) {
+Builder::SearchOutcome Builder::bidirectional_search(FaceId n, FaceId a, FaceId b, RegionId r, size_t budget) {
     stamp_base_ += 2;
     if (stamp_base_ >= 0xfffffff0u) {
-        std::fill(stamp_.begin(), stamp_.end(), 0);
+        stamp_.assign(stamp_.size(), 0);
         stamp_base_ = 2;
     }
     const uint32_t mark[2] = {stamp_base_, stamp_base_ + 1};
@@ -75,11 +74,11 @@ Builder::SearchOutcome Builder::bidirectional_search(uint32_t n, uint32_t a, uin
                 stamp_[n] = 0;
                 return s == 0 ? SearchOutcome::IslandOfA : SearchOutcome::IslandOfB;
             }
-            const uint32_t f = stack_[s].back();
+            const FaceId f = stack_[s].back();
             stack_[s].pop_back();
             ++popped;
-            for (uint32_t k = 0; k < 3; ++k) {
-                const uint32_t g = open_neighbor(he(f, k), r);
+            for (const HalfedgeId h : sides(f)) {
+                const FaceId g = open_neighbor(h, r);
                 if (g == kNone || g == n) continue;
                 if (stamp_[g] == mark[s]) continue;
                 if (stamp_[g] == mark[1 - s]) {
@@ -96,11 +95,10 @@ Builder::SearchOutcome Builder::bidirectional_search(uint32_t n, uint32_t a, uin
 
 // Cheap part of the classification: open neighbours, then the local cavity test. In a region
 // without cycles (beta 0, a disk) a failed cavity test proves a bridge without any search.
-Builder::Classification Builder::classify_local(uint32_t n, uint32_t from, uint32_t r) const {
+Builder::Classification Builder::classify_local(FaceId n, FaceId from, RegionId r) const {
     Classification c;
-    for (uint32_t k = 0; k < 3; ++k) {
-        const uint32_t h = he(n, k);
-        const uint32_t g = open_neighbor(h, r);
+    for (const HalfedgeId h : sides(n)) {
+        const FaceId g = open_neighbor(h, r);
         if (g == kNone || g == from) continue;
         if (c.a == kNone) {
             c.a = g;
@@ -119,7 +117,7 @@ Builder::Classification Builder::classify_local(uint32_t n, uint32_t from, uint3
 // Expensive part: the bidirectional search decides Unknown, and finds the smaller island of a
 // bridge (left in side_[c.small_side]); call it right before taking a bridge. With a budget
 // (faces visited) it may return false: still Unknown.
-bool Builder::resolve(Classification& c, uint32_t n, uint32_t r, size_t budget) {
+bool Builder::resolve(Classification& c, FaceId n, RegionId r, size_t budget) {
     if (c.kind == Kind::Safe || (c.kind == Kind::Bridge && c.small_side != kNone && searched_ == n)) return true;
     const SearchOutcome s = bidirectional_search(n, c.a, c.b, r, budget);
     searched_ = n;

@@ -11,11 +11,10 @@ namespace singlestrip::growth {
 
 // The open neighbours of t in `region`, dest left out while anything else is left, in the order
 // they are tried.
-Builder::Candidates Builder::candidates(uint32_t t, uint32_t region, uint32_t dest) const {
+Builder::Candidates Builder::candidates(FaceId t, RegionId region, FaceId dest) const {
     Candidates c;
-    for (uint32_t k = 0; k < 3; ++k) {
-        const uint32_t h = he(t, k);
-        const uint32_t g = open_neighbor(h, region);
+    for (const HalfedgeId h : sides(t)) {
+        const FaceId g = open_neighbor(h, region);
         if (g == kNone) continue;
         if (g == dest && region_size_[region] > 1) {
             c.dest_adjacent = true;
@@ -25,9 +24,9 @@ Builder::Candidates Builder::candidates(uint32_t t, uint32_t region, uint32_t de
         c.he[c.n++] = h;
     }
     // Turn of each candidate relative to the in-edge of t.
-    const uint32_t pv = prev_[t];
-    const uint32_t hin = pv == kNone ? kNone : shared_of(t, pv);
-    for (uint32_t i = 0; i < c.n; ++i) c.turn[i] = hin == kNone ? 0 : (c.he[i] == next_of(hin) ? +1 : -1);
+    const FaceId pv = prev_[t];
+    const HalfedgeId hin = pv == kNone ? HalfedgeId() : mesh_.shared_halfedge(t, pv);
+    for (uint32_t i = 0; i < c.n; ++i) c.turn[i] = hin == kNone ? 0 : (c.he[i] == Mesh::next(hin) ? +1 : -1);
     // Order: greedy = fewer open neighbours first (Warnsdorff), ties alternate the turn;
     // paper = keep the same turn direction as before.
     uint32_t deg[3] = {0, 0, 0};
@@ -46,7 +45,7 @@ Builder::Candidates Builder::candidates(uint32_t t, uint32_t region, uint32_t de
 }
 
 // The first candidate (in c.order) that is safe to take, or kNone; cls[i] classifies the i-th.
-uint32_t Builder::choose_safe(const Candidates& c, uint32_t t, uint32_t region, Classification (&cls)[3]) {
+uint32_t Builder::choose_safe(const Candidates& c, FaceId t, RegionId region, Classification (&cls)[3]) {
     // Cheap tests first for every candidate considered; searches only if none passes.
     // Without greedy turns only the preferred neighbour is considered (paper, Algorithm 1).
     const uint32_t considered = opt_.greedy ? c.n : 1;
@@ -81,23 +80,23 @@ uint32_t Builder::choose_safe(const Candidates& c, uint32_t t, uint32_t region, 
 // Only dest is reachable from t: the region ends here and what is left is deferred; it touches
 // dest (inside a splice dest's out-edge leads back to the strip, so through one edge; as the
 // strip's last face, possibly through two, then maybe as two islands).
-void Builder::end_at_dest(uint32_t t, uint32_t region, uint32_t dest) {
+void Builder::end_at_dest(FaceId t, RegionId region, FaceId dest) {
     const Classification c = classify(dest, t, region);
     if (c.kind == Kind::Bridge) {
-        const uint32_t large_he = c.small_side == 0 ? c.hb : c.ha;
-        const uint32_t large = take_bridge(t, dest, region, kNone, c);
-        defer(large, twin_of(large_he));
+        const HalfedgeId large_he = c.small_side == 0 ? c.hb : c.ha;
+        const RegionId large = take_bridge(t, dest, region, kNone, c);
+        defer(large, mesh_.twin(large_he));
         return;
     }
     if (c.fundamental) note_fundamental(dest, region);
     take(t, dest);
-    defer(region, twin_of(c.ha));
+    defer(region, mesh_.twin(c.ha));
 }
 
 // Grows the strip after `cursor` through region `region`; if dest != kNone the region must end
 // with dest (it is spliced before an existing strip face).
-void Builder::grow(uint32_t cursor, uint32_t region, uint32_t dest) {
-    uint32_t t = cursor;
+void Builder::grow(FaceId cursor, RegionId region, FaceId dest) {
+    FaceId t = cursor;
     while (region_size_[region] > 0) {
         const Candidates c = candidates(t, region, dest);
         if (c.n == 0) {
@@ -110,7 +109,7 @@ void Builder::grow(uint32_t cursor, uint32_t region, uint32_t dest) {
         }
         Classification cls[3];
         if (const uint32_t chosen = choose_safe(c, t, region, cls); chosen != kNone) {
-            const uint32_t n = c.face[c.order[chosen]];
+            const FaceId n = c.face[c.order[chosen]];
             if (cls[chosen].fundamental) note_fundamental(n, region);
             last_turn_ = c.turn[c.order[chosen]];
             take(t, n);
@@ -119,7 +118,7 @@ void Builder::grow(uint32_t cursor, uint32_t region, uint32_t dest) {
         }
         // Every candidate considered is a bridge: take the first anyway, continue into one island
         // and defer the other (relabelled, so R stays connected: invariant G).
-        const uint32_t n = c.face[c.order[0]];
+        const FaceId n = c.face[c.order[0]];
         last_turn_ = c.turn[c.order[0]];
         resolve(cls[0], n, region);
         region = take_bridge(t, n, region, dest, cls[0]);
@@ -130,35 +129,35 @@ void Builder::grow(uint32_t cursor, uint32_t region, uint32_t dest) {
 // Takes n (a bridge of `region`, classified in c) after cursor: the island holding dest, or the
 // larger one, stays the region to grow; the other is relabelled if needed and deferred,
 // anchored at n. Returns the region to continue in.
-uint32_t Builder::take_bridge(uint32_t cursor, uint32_t n, uint32_t region, uint32_t dest, const Classification& c) {
+RegionId Builder::take_bridge(FaceId cursor, FaceId n, RegionId region, FaceId dest, const Classification& c) {
     const uint32_t small = c.small_side;
-    const uint32_t small_he = small == 0 ? c.ha : c.hb;
-    const uint32_t large_he = small == 0 ? c.hb : c.ha;
+    const HalfedgeId small_he = small == 0 ? c.ha : c.hb;
+    const HalfedgeId large_he = small == 0 ? c.hb : c.ha;
     take(cursor, n);  // first, so that n counts in neither island below
     const uint32_t small_size = static_cast<uint32_t>(side_[small].size());
     const long long beta_small = 1 - chi_of(side_[small], region);
-    const uint32_t r_small = new_region(small_size);
+    const RegionId r_small = new_region(small_size);
     region_size_[region] -= small_size;
     region_beta_[r_small] = beta_small;
     region_beta_[region] -= beta_small;
     if (region_beta_[region] < 0 || beta_small < 0)
         throw InternalError("strip builder: negative cycle count after a bridge (topology tracking broken)");
     bool dest_in_small = false;
-    for (uint32_t f : side_[small]) {
+    for (const FaceId f : side_[small]) {
         region_[f] = r_small;
         dest_in_small |= f == dest;
     }
     if (dest_in_small) {
-        defer(region, twin_of(large_he));
+        defer(region, mesh_.twin(large_he));
         return r_small;
     }
-    defer(r_small, twin_of(small_he));
+    defer(r_small, mesh_.twin(small_he));
     return region;
 }
 
 // Takes f after cursor when f is forced (no choice): if f is a bridge of its region, the island
 // without dest is deferred. Returns the region to continue in.
-uint32_t Builder::take_forced(uint32_t cursor, uint32_t f, uint32_t region, uint32_t dest) {
+RegionId Builder::take_forced(FaceId cursor, FaceId f, RegionId region, FaceId dest) {
     const Classification c = classify(f, cursor, region);
     if (c.kind == Kind::Bridge) return take_bridge(cursor, f, region, dest, c);
     if (c.fundamental) note_fundamental(f, region);

@@ -13,26 +13,26 @@ namespace singlestrip::growth {
 // the region's anchor face are split at the midpoint of their shared edge; the host's two
 // children keep the host's in- and out-edges, the anchor's two children become the first and
 // last face of the region's own strip, which is grown between them.
-void Builder::absorb(uint32_t record) {
+void Builder::absorb(DeferredId record) {
     Deferred& d = deferred_[record];
     d.done = true;
-    const uint32_t region = d.region;
-    const uint32_t ha = d.anchor;  // in the anchor face
-    const uint32_t hh = twin_of(ha);
+    const RegionId region = d.region;
+    const HalfedgeId ha = d.anchor;  // in the anchor face
+    const HalfedgeId hh = mesh_.twin(ha);
     if (hh == kNone) throw InternalError("strip builder: deferred region lost its host");
-    const uint32_t host = face_of(hh);
-    const uint32_t anchor = face_of(ha);
+    const FaceId host = Mesh::face(hh);
+    const FaceId anchor = Mesh::face(ha);
     if (!striped_[host] || !in_region(anchor, region))
-        throw InternalError("strip builder: deferred region " + std::to_string(region) + " has a bad anchor");
+        throw InternalError("strip builder: deferred region " + std::to_string(region.idx()) + " has a bad anchor");
     if (try_detour(region, anchor)) return;
     if (host == tail_ && target_ == kNone) {  // free: the strip simply continues into the region
-        const uint32_t r = take_forced(host, anchor, region, kNone);
+        const RegionId r = take_forced(host, anchor, region, kNone);
         grow(anchor, r, kNone);
         return;
     }
-    const uint32_t p = prev_[host], n = next_[host];
-    const Children s = split_at(hh);
-    region_[s.f_b] = kNoRegion;
+    const FaceId p = prev_[host], n = next_[host];
+    const SplitResult s = split_at(hh);
+    region_[s.f_b] = kNone;
     fundamental_[s.f_b] = fundamental_[host];
     time_[s.f_b] = time_[host];
     region_[s.g_a] = region;
@@ -40,13 +40,13 @@ void Builder::absorb(uint32_t record) {
     // c0 keeps the host's in-edge, c1 its out-edge; a0 is the anchor child beside c0.
     bool fa_first;
     if (p != kNone)
-        fa_first = shared_of(s.f_a, p) != kNone;
+        fa_first = mesh_.shared_halfedge(s.f_a, p) != kNone;
     else if (n != kNone)
-        fa_first = shared_of(s.f_a, n) == kNone;
+        fa_first = mesh_.shared_halfedge(s.f_a, n) == kNone;
     else
         fa_first = source_ == kNone || has_vertex(s.f_a, source_);
-    const uint32_t c0 = fa_first ? s.f_a : s.f_b, c1 = fa_first ? s.f_b : s.f_a;
-    const uint32_t a0 = fa_first ? s.g_a : s.g_b, a1 = fa_first ? s.g_b : s.g_a;
+    const FaceId c0 = fa_first ? s.f_a : s.f_b, c1 = fa_first ? s.f_b : s.f_a;
+    const FaceId a0 = fa_first ? s.g_a : s.g_b, a1 = fa_first ? s.g_b : s.g_a;
     // Host slot (index f_a) becomes c0 -> c1.
     if (fa_first)
         insert_after(s.f_a, s.f_b);
@@ -55,7 +55,7 @@ void Builder::absorb(uint32_t record) {
     // Normally the region goes between the children: c0 -> a0 ... a1 -> c1. At the ends of the
     // strip the region may instead go first (a1 ... a0 -> c0 -> c1) or last (c0 -> c1 -> a1 ... a0)
     // so that the first face keeps the source vertex and the last face the target (§5.2).
-    uint32_t cursor = c0, first = a0, last = a1;
+    FaceId cursor = c0, first = a0, last = a1;
     if (p == kNone && source_ != kNone && !has_vertex(c0, source_)) {
         cursor = kNone;
         first = a1;
@@ -65,14 +65,14 @@ void Builder::absorb(uint32_t record) {
         first = a1;
         last = a0;
     }
-    const uint32_t r = take_forced(cursor, first, region, last);
+    const RegionId r = take_forced(cursor, first, region, last);
     grow(first, r, last);
 }
 
 // Zero-cost splice: if two consecutive strip faces x -> y touch the region at faces r1 (beside x)
 // and r2 (beside y), with r1 != r2 unless the region is that single face, the region's own
 // strip r1 ... r2 goes between them and no split is needed. O(min(region size, kScanLimit)).
-bool Builder::try_detour(uint32_t region, uint32_t anchor) {
+bool Builder::try_detour(RegionId region, FaceId anchor) {
     // Only the part of the region near its anchor is examined (a large region deferred again and
     // again inside nested splices would otherwise be scanned each time: quadratic), and no more
     // than the credit earned by the faces taken so far (many absorbs of large regions without a
@@ -83,9 +83,9 @@ bool Builder::try_detour(uint32_t region, uint32_t anchor) {
     stamp_base_ += 2;
     stamp_[anchor] = stamp_base_;
     for (size_t i = 0; i < scratch_.size() && scratch_.size() < limit; ++i) {
-        const uint32_t f = scratch_[i];
-        for (uint32_t k = 0; k < 3; ++k) {
-            const uint32_t g = open_neighbor(he(f, k), region);
+        const FaceId f = scratch_[i];
+        for (const HalfedgeId h : sides(f)) {
+            const FaceId g = open_neighbor(h, region);
             if (g != kNone && stamp_[g] != stamp_base_) {
                 stamp_[g] = stamp_base_;
                 scratch_.push_back(g);
@@ -94,22 +94,22 @@ bool Builder::try_detour(uint32_t region, uint32_t anchor) {
     }
     scan_credit_ -= std::min(scan_credit_, scratch_.size());
     const bool single = region_size_[region] == 1;
-    for (const uint32_t r1 : scratch_) {
-        for (uint32_t k = 0; k < 3; ++k) {
-            const uint32_t h = he(r1, k);
+    for (const FaceId r1 : scratch_) {
+        // Unrolled as the other loops over a face's sides (GCC's size estimate falls just short).
+#pragma GCC unroll 3
+        for (const HalfedgeId h : sides(r1)) {
             if (!passable(h)) continue;
-            const uint32_t x = across(h);
+            const FaceId x = mesh_.neighbor(h);
             if (!striped_[x]) continue;
-            const uint32_t y = next_[x];
+            const FaceId y = next_[x];
             if (y == kNone) continue;
-            for (uint32_t j = 0; j < 3; ++j) {
-                const uint32_t hy = he(y, j);
+            for (const HalfedgeId hy : sides(y)) {
                 if (!passable(hy)) continue;
-                const uint32_t r2 = across(hy);
+                const FaceId r2 = mesh_.neighbor(hy);
                 if (!in_region(r2, region) || (r2 == r1) != single) continue;
                 ++stats_.detours;
-                const uint32_t r = take_forced(x, r1, region, single ? kNone : r2);
-                grow(r1, r, single ? kNone : r2);
+                const RegionId r = take_forced(x, r1, region, single ? FaceId() : r2);
+                grow(r1, r, single ? FaceId() : r2);
                 return true;
             }
         }
@@ -118,14 +118,13 @@ bool Builder::try_detour(uint32_t region, uint32_t anchor) {
 }
 
 bool Builder::absorb_at_tail() {
-    for (uint32_t k = 0; k < 3; ++k) {
-        const uint32_t h = he(tail_, k);
+    for (const HalfedgeId h : sides(tail_)) {
         if (!passable(h)) continue;
-        const uint32_t g = across(h);
+        const FaceId g = mesh_.neighbor(h);
         if (striped_[g]) continue;
-        const uint32_t rec = deferred_of_region_[region_[g]];
+        const DeferredId rec = deferred_of_region_[region_[g]];
         if (rec == kNone || deferred_[rec].done) continue;
-        deferred_[rec].anchor = twin_of(h);
+        deferred_[rec].anchor = mesh_.twin(h);
         absorb(rec);
         return true;
     }
@@ -137,10 +136,10 @@ bool Builder::absorb_at_tail() {
 void Builder::absorb_all() {
     for (;;) {
         if (target_ == kNone && absorb_at_tail()) continue;
-        uint32_t rec = kNone;
+        DeferredId rec;
         while (!deferred_.empty()) {
             if (!deferred_.back().done) {
-                rec = static_cast<uint32_t>(deferred_.size() - 1);
+                rec = DeferredId(static_cast<uint32_t>(deferred_.size() - 1));
                 break;
             }
             deferred_.pop_back();

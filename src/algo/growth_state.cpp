@@ -19,7 +19,7 @@ void Builder::grow_arrays() {
     };
     const uint32_t nf = mesh_.num_faces(), nh = mesh_.num_halfedges(), nv = mesh_.num_vertices();
     fit(striped_, nf, 0);
-    fit(region_, nf, kNoRegion);
+    fit(region_, nf, kNone);
     fit(next_, nf, kNone);
     fit(prev_, nf, kNone);
     fit(stamp_, nf, 0);
@@ -31,32 +31,31 @@ void Builder::grow_arrays() {
     fit(rim_, nv, 0);
 }
 
-void Builder::count_striped(uint32_t f, int delta) {
-    for (uint32_t k = 0; k < 3; ++k) striped_at_[mesh_.corner_vertices()[he(f, k)]] += static_cast<uint32_t>(delta);
+void Builder::count_striped(FaceId f, int delta) {
+    for (const HalfedgeId h : sides(f)) striped_at_[mesh_.from(h)] += static_cast<uint32_t>(delta);
 }
 
 // chi of a set of open faces of region r: F - (passable edges inside) + (vertices whose whole
 // fan lies in the region through passable edges). Derivation in docs/algorithm.md. O(|faces|).
-long long Builder::chi_of(const std::vector<uint32_t>& faces, uint32_t r) {
+long long Builder::chi_of(const std::vector<FaceId>& faces, RegionId r) {
     ++vstamp_base_;
     long long inner_halfedges = 0, interior_vertices = 0;
-    for (const uint32_t f : faces) {
-        for (uint32_t k = 0; k < 3; ++k) {
-            const uint32_t h = he(f, k);
+    for (const FaceId f : faces) {
+        for (const HalfedgeId h : sides(f)) {
             inner_halfedges += open_neighbor(h, r) != kNone;
-            const uint32_t v = from_of(h);
+            const VertexId v = mesh_.from(h);
             if (vstamp_[v] == vstamp_base_) continue;
             vstamp_[v] = vstamp_base_;
             // Interior: rotating around v never leaves the region nor crosses a blocked edge.
-            uint32_t g = h;
+            HalfedgeId g = h;
             bool interior = true;
             do {
-                const uint32_t e = prev_of(g);
-                if (!passable(e) || !in_region(face_of(g), r)) {
+                const HalfedgeId e = Mesh::prev(g);
+                if (!passable(e) || !in_region(Mesh::face(g), r)) {
                     interior = false;
                     break;
                 }
-                g = twin_of(e);
+                g = mesh_.twin(e);
             } while (g != h);
             interior_vertices += interior;
         }
@@ -64,14 +63,14 @@ long long Builder::chi_of(const std::vector<uint32_t>& faces, uint32_t r) {
     return static_cast<long long>(faces.size()) - inner_halfedges / 2 + interior_vertices;
 }
 
-uint32_t Builder::new_region(uint32_t size) {
+RegionId Builder::new_region(uint32_t size) {
     region_size_.push_back(size);
     region_beta_.push_back(0);
     deferred_of_region_.push_back(kNone);
-    return static_cast<uint32_t>(region_size_.size() - 1);
+    return RegionId(static_cast<uint32_t>(region_size_.size() - 1));
 }
 
-void Builder::insert_after(uint32_t cursor, uint32_t f) {
+void Builder::insert_after(FaceId cursor, FaceId f) {
     if (cursor == kNone) {
         next_[f] = head_;
         prev_[f] = kNone;
@@ -80,7 +79,7 @@ void Builder::insert_after(uint32_t cursor, uint32_t f) {
         if (tail_ == kNone) tail_ = f;
         return;
     }
-    const uint32_t nx = next_[cursor];
+    const FaceId nx = next_[cursor];
     next_[cursor] = f;
     prev_[f] = cursor;
     next_[f] = nx;
@@ -90,8 +89,8 @@ void Builder::insert_after(uint32_t cursor, uint32_t f) {
         tail_ = f;
 }
 
-void Builder::take(uint32_t cursor, uint32_t f) {
-    if (striped_[f]) throw InternalError("strip builder: face " + std::to_string(f) + " taken twice");
+void Builder::take(FaceId cursor, FaceId f) {
+    if (striped_[f]) throw InternalError("strip builder: face " + std::to_string(f.idx()) + " taken twice");
     striped_[f] = 1;
     count_striped(f, +1);
     time_[f] = clock_++;
@@ -100,40 +99,40 @@ void Builder::take(uint32_t cursor, uint32_t f) {
     insert_after(cursor, f);
 }
 
-void Builder::note_fundamental(uint32_t f, uint32_t r) {
+void Builder::note_fundamental(FaceId f, RegionId r) {
     fundamental_[f] = 1;
     ++stats_.fundamental_triangles;
     --region_beta_[r];
 }
 
-void Builder::defer(uint32_t region, uint32_t anchor) {
-    deferred_of_region_[region] = static_cast<uint32_t>(deferred_.size());
+void Builder::defer(RegionId region, HalfedgeId anchor) {
+    deferred_of_region_[region] = DeferredId(static_cast<uint32_t>(deferred_.size()));
     deferred_.push_back({region, anchor, false});
     ++stats_.deferred_regions;
 }
 
 // Splits the edge of h at its midpoint, keeping the per-face and per-half-edge state in step.
-Builder::Children Builder::split_at(uint32_t h) {
+SplitResult Builder::split_at(HalfedgeId h) {
     // Constraint flags of the two half-edges that split_edge moves into new faces.
-    const uint32_t moved_f = next_of(h), moved_g = next_of(twin_of(h));
+    const HalfedgeId t = mesh_.twin(h);
+    const HalfedgeId moved_f = Mesh::next(h), moved_g = Mesh::next(t);
     const uint8_t blocked_f = blocked_[moved_f], blocked_g = blocked_[moved_g];
     // The children of a striped face are striped (the host's in absorb()).
-    const uint8_t striped_f = striped_[face_of(h)], striped_g = striped_[face_of(twin_of(h))];
-    if (striped_f) count_striped(face_of(h), -1);
-    if (striped_g) count_striped(face_of(twin_of(h)), -1);
-    const SplitResult r = mesh_.split_edge(HalfedgeId(h));
-    const Children s{r.f_a.idx(), r.f_b.idx(), r.g_a.idx(), r.g_b.idx()};
+    const uint8_t striped_f = striped_[Mesh::face(h)], striped_g = striped_[Mesh::face(t)];
+    if (striped_f) count_striped(Mesh::face(h), -1);
+    if (striped_g) count_striped(Mesh::face(t), -1);
+    const SplitResult s = mesh_.split_edge(h);
     ++stats_.splits;
     check_split_budget();
     grow_arrays();
     striped_[s.f_b] = striped_f;
     striped_[s.g_a] = striped_g;
-    for (const uint32_t f : {s.f_a, s.f_b, s.g_a, s.g_b})
+    for (const FaceId f : {s.f_a, s.f_b, s.g_a, s.g_b})
         if (striped_[f]) count_striped(f, +1);
     blocked_[moved_f] = 0;
     blocked_[moved_g] = 0;
-    blocked_[he(s.f_b, 1)] = blocked_f;
-    blocked_[he(s.g_a, 1)] = blocked_g;
+    blocked_[Mesh::halfedge(s.f_b, 1)] = blocked_f;
+    blocked_[Mesh::halfedge(s.g_a, 1)] = blocked_g;
     if (opt_.validate_each_split) mesh_.validate();
     return s;
 }

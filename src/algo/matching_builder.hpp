@@ -13,44 +13,16 @@
 #include <utility>
 #include <vector>
 
+#include "core/face_sides.hpp"
 #include "core/id_vector.hpp"
 #include "singlestrip/mesh.hpp"
 #include "singlestrip/strip.hpp"
+#include "strip_controls.hpp"
 
 namespace singlestrip::matching {
 
 using StructId = Id<struct StructTag>;  ///< a loop or path of crossed edges (through the union-find)
 using StepId = Id<struct StepTag>;      ///< a step of augment_through_chains()' search
-
-/// The three half-edges of face f (k = 0, 1, 2): `for (HalfedgeId h : sides(f))`.
-class Sides {
-public:
-    class iterator {
-    public:
-        constexpr iterator(FaceId f, uint32_t k) noexcept : f_(f), k_(k) {}
-        HalfedgeId operator*() const noexcept { return Mesh::halfedge(f_, k_); }
-        constexpr iterator& operator++() noexcept {
-            ++k_;
-            return *this;
-        }
-        friend constexpr bool operator==(iterator, iterator) noexcept = default;
-
-    private:
-        FaceId f_;
-        uint32_t k_;
-    };
-    constexpr explicit Sides(FaceId f) noexcept : f_(f) {}
-    [[nodiscard]] constexpr iterator begin() const noexcept { return {f_, 0}; }
-    [[nodiscard]] constexpr iterator end() const noexcept { return {f_, 3}; }
-
-private:
-    FaceId f_;
-};
-[[nodiscard]] constexpr Sides sides(FaceId f) noexcept {
-    return Sides(f);
-}
-
-using EdgeFlags = IdVector<HalfedgeId, uint8_t>;
 
 class MatchingBuilder {
 public:

@@ -8,11 +8,10 @@
 
 #include "core/soup_edges.hpp"
 #include "singlestrip/errors.hpp"
+#include "singlestrip/mesh.hpp"
 
 namespace singlestrip {
 namespace {
-
-constexpr uint32_t kUnused = 0xffffffffu;
 
 void require(bool ok, const char* what) {
     if (!ok) throw RequestError(std::string("generator: ") + what);
@@ -23,7 +22,7 @@ void require(bool ok, const char* what) {
 TriangleSoup make_grid_cells(uint32_t nx, uint32_t ny, double cell, const std::function<bool(uint32_t, uint32_t)>& keep) {
     require(nx >= 1 && ny >= 1, "grid needs nx, ny >= 1");
     const uint32_t w = nx + 1;
-    std::vector<uint32_t> id(static_cast<size_t>(w) * (ny + 1), kUnused);
+    std::vector<uint32_t> id(static_cast<size_t>(w) * (ny + 1), kNone);
     std::vector<Triangle> raw;
     for (uint32_t j = 0; j < ny; ++j) {
         for (uint32_t i = 0; i < nx; ++i) {
@@ -43,7 +42,7 @@ TriangleSoup make_grid_cells(uint32_t nx, uint32_t ny, double cell, const std::f
         for (uint32_t v : t) id[v] = 0;
     TriangleSoup soup;
     for (uint32_t v = 0; v < id.size(); ++v) {
-        if (id[v] == kUnused) continue;
+        if (id[v] == kNone) continue;
         id[v] = static_cast<uint32_t>(soup.points.size());
         soup.points.push_back({(v % w) * cell, (v / w) * cell, 0.0});
     }

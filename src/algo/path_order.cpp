@@ -6,10 +6,11 @@
 
 namespace singlestrip {
 
-PathOrder::PathOrder(uint32_t n) : left_(n, kNil), right_(n, kNil), parent_(n, kNil), size_(n, 1), flip_(n, 0) {}
+PathOrder::PathOrder(uint32_t n) : left_(n, kNone), right_(n, kNone), parent_(n, kNone), size_(n, 1), flip_(n, 0) {}
 
 // A fixed hash as heap priority: no random state, so runs are reproducible.
-uint32_t PathOrder::priority(uint32_t x) {
+uint32_t PathOrder::priority(FaceId f) {
+    uint32_t x = f.idx();
     x ^= x >> 16;
     x *= 0x7feb352dU;
     x ^= x >> 15;
@@ -18,29 +19,29 @@ uint32_t PathOrder::priority(uint32_t x) {
     return x;
 }
 
-void PathOrder::push(uint32_t x) {
+void PathOrder::push(FaceId x) {
     if (!flip_[x]) return;
     std::swap(left_[x], right_[x]);
-    if (left_[x] != kNil) flip_[left_[x]] ^= 1;
-    if (right_[x] != kNil) flip_[right_[x]] ^= 1;
+    if (left_[x] != kNone) flip_[left_[x]] ^= 1;
+    if (right_[x] != kNone) flip_[right_[x]] ^= 1;
     flip_[x] = 0;
 }
 
-void PathOrder::pull(uint32_t x) {
+void PathOrder::pull(FaceId x) {
     size_[x] = 1;
-    for (uint32_t c : {left_[x], right_[x]})
-        if (c != kNil) size_[x] += size_[c], parent_[c] = x;
+    for (const FaceId c : {left_[x], right_[x]})
+        if (c != kNone) size_[x] += size_[c], parent_[c] = x;
 }
 
 // Cartesian tree of `items` by priority, in linear time (right spine on a stack).
-uint32_t PathOrder::build(const std::vector<FaceId>& items, bool reversed) {
-    std::vector<uint32_t> spine;
+FaceId PathOrder::build(const std::vector<FaceId>& items, bool reversed) {
+    std::vector<FaceId> spine;
     const std::size_t n = items.size();
     for (std::size_t i = 0; i < n; ++i) {
-        const uint32_t x = items[reversed ? n - 1 - i : i].idx();
-        left_[x] = right_[x] = parent_[x] = kNil;
+        const FaceId x = items[reversed ? n - 1 - i : i];
+        left_[x] = right_[x] = parent_[x] = kNone;
         flip_[x] = 0;
-        uint32_t last = kNil;
+        FaceId last;
         while (!spine.empty() && priority(spine.back()) < priority(x)) {
             last = spine.back();
             spine.pop_back();
@@ -55,36 +56,36 @@ uint32_t PathOrder::build(const std::vector<FaceId>& items, bool reversed) {
         if (spine.size() == 1) break;
         spine.pop_back();
     }
-    if (spine.empty()) return kNil;
-    parent_[spine.front()] = kNil;
+    if (spine.empty()) return kNone;
+    parent_[spine.front()] = kNone;
     return spine.front();
 }
 
-uint32_t PathOrder::merge(uint32_t a, uint32_t b) {
-    if (a == kNil) return b;
-    if (b == kNil) return a;
+FaceId PathOrder::merge(FaceId a, FaceId b) {
+    if (a == kNone) return b;
+    if (b == kNone) return a;
     if (priority(a) > priority(b)) {
         push(a);
         right_[a] = merge(right_[a], b);
         pull(a);
-        parent_[a] = kNil;
+        parent_[a] = kNone;
         return a;
     }
     push(b);
     left_[b] = merge(a, left_[b]);
     pull(b);
-    parent_[b] = kNil;
+    parent_[b] = kNone;
     return b;
 }
 
 // First k elements of t into a, the rest into b.
-void PathOrder::split(uint32_t t, uint32_t k, uint32_t& a, uint32_t& b) {
-    if (t == kNil) {
-        a = b = kNil;
+void PathOrder::split(FaceId t, uint32_t k, FaceId& a, FaceId& b) {
+    if (t == kNone) {
+        a = b = kNone;
         return;
     }
     push(t);
-    const uint32_t ls = left_[t] == kNil ? 0 : size_[left_[t]];
+    const uint32_t ls = count(left_[t]);
     if (k <= ls) {
         split(left_[t], k, a, left_[t]);
         pull(t);
@@ -94,8 +95,8 @@ void PathOrder::split(uint32_t t, uint32_t k, uint32_t& a, uint32_t& b) {
         pull(t);
         a = t;
     }
-    if (a != kNil) parent_[a] = kNil;
-    if (b != kNil) parent_[b] = kNil;
+    if (a != kNone) parent_[a] = kNone;
+    if (b != kNone) parent_[b] = kNone;
 }
 
 void PathOrder::append(const std::vector<FaceId>& items) {
@@ -106,25 +107,24 @@ void PathOrder::prepend(const std::vector<FaceId>& items) {
     root_ = merge(build(items, true), root_);
 }
 
-uint32_t PathOrder::position(FaceId f) {
-    const uint32_t x = f.idx();
+uint32_t PathOrder::position(FaceId x) {
     up_.clear();  // flips above x must be pushed before sizes say where x is
-    for (uint32_t y = x; y != kNil; y = parent_[y]) up_.push_back(y);
+    for (FaceId y = x; y != kNone; y = parent_[y]) up_.push_back(y);
     for (std::size_t i = up_.size(); i-- > 0;) push(up_[i]);
-    uint32_t pos = left_[x] == kNil ? 0 : size_[left_[x]];
-    for (uint32_t y = x; parent_[y] != kNil; y = parent_[y]) {
-        const uint32_t p = parent_[y];
-        if (right_[p] == y) pos += 1 + (left_[p] == kNil ? 0 : size_[left_[p]]);
+    uint32_t pos = count(left_[x]);
+    for (FaceId y = x; parent_[y] != kNone; y = parent_[y]) {
+        const FaceId p = parent_[y];
+        if (right_[p] == y) pos += 1 + count(left_[p]);
     }
     return pos;
 }
 
 FaceId PathOrder::at(uint32_t k) {
-    uint32_t t = root_;
+    FaceId t = root_;
     for (;;) {
         push(t);
-        const uint32_t ls = left_[t] == kNil ? 0 : size_[left_[t]];
-        if (k == ls) return FaceId(t);
+        const uint32_t ls = count(left_[t]);
+        if (k == ls) return t;
         if (k < ls) {
             t = left_[t];
         } else {
@@ -135,32 +135,32 @@ FaceId PathOrder::at(uint32_t k) {
 }
 
 void PathOrder::reverse_front(uint32_t k) {
-    uint32_t a, b;
+    FaceId a, b;
     split(root_, k, a, b);
-    if (a != kNil) flip_[a] ^= 1;
+    if (a != kNone) flip_[a] ^= 1;
     root_ = merge(a, b);
 }
 
 void PathOrder::reverse_back(uint32_t k) {
-    uint32_t a, b;
+    FaceId a, b;
     split(root_, k, a, b);
-    if (b != kNil) flip_[b] ^= 1;
+    if (b != kNone) flip_[b] ^= 1;
     root_ = merge(a, b);
 }
 
 std::vector<FaceId> PathOrder::items() {
     std::vector<FaceId> out;
-    std::vector<uint32_t> stack;
+    std::vector<FaceId> stack;
     out.reserve(size());
-    for (uint32_t t = root_; t != kNil || !stack.empty();) {
-        while (t != kNil) {
+    for (FaceId t = root_; t != kNone || !stack.empty();) {
+        while (t != kNone) {
             push(t);
             stack.push_back(t);
             t = left_[t];
         }
         t = stack.back();
         stack.pop_back();
-        out.push_back(FaceId(t));
+        out.push_back(t);
         t = right_[t];
     }
     return out;

@@ -7,14 +7,13 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/id_vector.hpp"
 #include "singlestrip/mesh.hpp"
 
 namespace singlestrip {
 
 class PathOrder {
 public:
-    static constexpr uint32_t kNil = UINT32_MAX;
-
     /// Room for faces 0..n-1 (a face is its own tree node); none is in the sequence yet. O(n).
     explicit PathOrder(uint32_t n);
 
@@ -30,24 +29,28 @@ public:
     /// Reverses positions [0, k) (front part) or [k, size) (back part). O(log n) expected.
     void reverse_front(uint32_t k);
     void reverse_back(uint32_t k);
-    [[nodiscard]] uint32_t size() const { return root_ == kNil ? 0 : size_[root_]; }
+    [[nodiscard]] uint32_t size() const { return count(root_); }
     [[nodiscard]] FaceId front() { return at(0); }
     [[nodiscard]] FaceId back() { return at(size() - 1); }
     /// The whole sequence, front to back. O(n).
     [[nodiscard]] std::vector<FaceId> items();
 
 private:
-    std::vector<uint32_t> left_, right_, parent_, size_;
-    std::vector<uint8_t> flip_;  ///< the subtree's order is reversed (not yet pushed down)
-    uint32_t root_ = kNil;
-    std::vector<uint32_t> up_;  ///< scratch of position()
+    // A tree node is a face; kNone is no node.
+    IdVector<FaceId, FaceId> left_, right_, parent_;
+    IdVector<FaceId, uint32_t> size_;
+    IdVector<FaceId, uint8_t> flip_;  ///< the subtree's order is reversed (not yet pushed down)
+    FaceId root_;
+    std::vector<FaceId> up_;  ///< scratch of position()
 
-    [[nodiscard]] static uint32_t priority(uint32_t x);
-    void push(uint32_t x);
-    void pull(uint32_t x);
-    [[nodiscard]] uint32_t build(const std::vector<FaceId>& items, bool reversed);
-    [[nodiscard]] uint32_t merge(uint32_t a, uint32_t b);
-    void split(uint32_t t, uint32_t k, uint32_t& a, uint32_t& b);
+    [[nodiscard]] static uint32_t priority(FaceId x);
+    /// Faces in the subtree of x (0 for kNone).
+    [[nodiscard]] uint32_t count(FaceId x) const { return x == kNone ? 0 : size_[x]; }
+    void push(FaceId x);
+    void pull(FaceId x);
+    [[nodiscard]] FaceId build(const std::vector<FaceId>& items, bool reversed);
+    [[nodiscard]] FaceId merge(FaceId a, FaceId b);
+    void split(FaceId t, uint32_t k, FaceId& a, FaceId& b);
 };
 
 }  // namespace singlestrip

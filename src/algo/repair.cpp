@@ -14,13 +14,12 @@
 #include "core/soup_edges.hpp"
 #include "singlestrip/attributes.hpp"
 #include "singlestrip/errors.hpp"
+#include "singlestrip/mesh.hpp"
 #include "singlestrip/validate.hpp"
 #include "union_find.hpp"
 
 namespace singlestrip {
 namespace {
-
-constexpr uint32_t kNo = 0xffffffffu;
 
 uint32_t from(const std::vector<Triangle>& t, uint32_t h) {
     return t[h / 3][h % 3];
@@ -59,12 +58,12 @@ struct Work {
             if (cut[h0] || cut[h1]) return;
             for (uint32_t v : {from(tris, h0), to(tris, h0)}) corners.unite(corner_at(tris, h0, v), corner_at(tris, h1, v));
         });
-        std::vector<uint32_t> assigned(3 * tris.size(), kNo);
+        std::vector<uint32_t> assigned(3 * tris.size(), kNone);
         std::vector<char> taken(points.size(), 0);
         for (uint32_t c = 0; c < 3 * tris.size(); ++c) {
             const uint32_t r = corners.find(c);
             uint32_t& v = tris[c / 3][c % 3];
-            if (assigned[r] == kNo) {
+            if (assigned[r] == kNone) {
                 if (!taken[v]) {
                     taken[v] = 1;
                     assigned[r] = v;
@@ -93,9 +92,9 @@ struct Work {
         });
     }
 
-    /// Twin of each half-edge across an uncut edge with exactly two faces, else kNo.
+    /// Twin of each half-edge across an uncut edge with exactly two faces, else kNone.
     std::vector<uint32_t> twins() const {
-        std::vector<uint32_t> twin(3 * tris.size(), kNo);
+        std::vector<uint32_t> twin(3 * tris.size(), kNone);
         edges().for_each_edge([&](const SoupEdges::Edge& e) {
             if (e.kind == EdgeKind::non_manifold)
                 throw InternalError("repair: edge still has " + std::to_string(e.num_halfedges()) + " faces after the cut");
@@ -117,7 +116,7 @@ struct Work {
         o.twin = twins();
         const std::size_t nf = tris.size();
         o.flip.assign(nf, -1);
-        o.comp.assign(nf, kNo);
+        o.comp.assign(nf, kNone);
         for (uint32_t s = 0; s < nf; ++s) {
             if (o.flip[s] >= 0) continue;
             o.comp_start.push_back(static_cast<uint32_t>(o.order.size()));
@@ -128,7 +127,7 @@ struct Work {
                 o.comp[f] = static_cast<uint32_t>(o.comp_start.size() - 1);
                 for (uint32_t k = 0; k < 3; ++k) {
                     const uint32_t h = 3 * f + k, t = o.twin[h];
-                    if (t == kNo) continue;
+                    if (t == kNone) continue;
                     const auto want = static_cast<int8_t>(o.flip[f] ^ (from(tris, h) == from(tris, t) ? 1 : 0));
                     if (o.flip[t / 3] < 0) {
                         o.flip[t / 3] = want;
@@ -173,7 +172,7 @@ struct Work {
             bool closed = true;
             for (auto it = first; it != last; ++it) {
                 flips += o.flip[*it] == 1 ? 1 : 0;
-                for (uint32_t k = 0; k < 3; ++k) closed = closed && o.twin[3 * *it + k] != kNo;
+                for (uint32_t k = 0; k < 3; ++k) closed = closed && o.twin[3 * *it + k] != kNone;
             }
             const bool majority_invert = 2 * flips > size;
             bool invert = majority_invert;

@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cstdint>
-#include <numeric>
 #include <string>
 #include <utility>
 
@@ -16,16 +15,15 @@ namespace singlestrip {
 
 namespace growth {
 
-uint32_t Builder::choose_seed() const {
-    const uint32_t nf = mesh_.num_faces();
-    if (opt_.seed_face) return opt_.seed_face->idx();
+FaceId Builder::choose_seed() const {
+    if (opt_.seed_face) return *opt_.seed_face;
     // Prefer a face with two blocked sides (it has one open neighbour: always safe), then one
     // with one blocked side whose opposite vertex is interior, then any face with a blocked side.
-    uint32_t best = 0;
+    FaceId best(0);
     int best_score = -1;
-    for (uint32_t f = 0; f < nf; ++f) {
+    for (const FaceId f : mesh_.faces()) {
         int closed = 0;
-        for (uint32_t k = 0; k < 3; ++k) closed += !passable(he(f, k));
+        for (const HalfedgeId h : sides(f)) closed += !passable(h);
         const int score = closed >= 3 ? 0 : closed;
         if (score > best_score) {
             best_score = score;
@@ -41,38 +39,37 @@ uint32_t Builder::choose_seed() const {
 void Builder::prepare() {
     grow_arrays();
     blocked_ = constraint_halfedges(mesh_, opt_);
-    for (uint32_t h = 0; h < mesh_.num_halfedges(); ++h)
-        if (!passable(h)) rim_[from_of(h)] = rim_[to_of(h)] = 1;
+    for (const HalfedgeId h : mesh_.halfedges())
+        if (!passable(h)) rim_[mesh_.from(h)] = rim_[mesh_.to(h)] = 1;
     stats_.input_triangles = mesh_.num_faces();
     stats_.boundary_loops = mesh_.num_boundary_loops();
     stats_.genus = mesh_.genus();
-    source_ = opt_.source ? opt_.source->idx() : kNone;
-    target_ = opt_.target ? opt_.target->idx() : kNone;
-    const uint32_t r0 = new_region(mesh_.num_faces());
-    std::fill(region_.begin(), region_.end(), r0);
+    source_ = opt_.source.value_or(kNone);
+    target_ = opt_.target.value_or(kNone);
+    const RegionId r0 = new_region(mesh_.num_faces());
+    region_.assign(region_.size(), r0);
 }
 
 // The first face (seed) and the face the strip must end with (dest, kNone without a target).
-std::pair<uint32_t, uint32_t> Builder::choose_ends() {
+std::pair<FaceId, FaceId> Builder::choose_ends() {
     const uint32_t nf = mesh_.num_faces();
-    const uint32_t r0 = 0;
-    uint32_t seed = opt_.seed_face ? opt_.seed_face->idx() : opt_.source ? face_at_vertex(opt_.source->idx(), kNone) : choose_seed();
+    FaceId seed = opt_.seed_face ? *opt_.seed_face : opt_.source ? face_at_vertex(*opt_.source, kNone) : choose_seed();
     if (!opt_.target) return {seed, kNone};
-    uint32_t dest = face_at_vertex(opt_.target->idx(), seed);
+    FaceId dest = face_at_vertex(*opt_.target, seed);
     if (dest == seed && nf > 1) {
         // The target's only face is the first face: split it across the edge opposite the
         // target so that both children touch the target; start in one, end in the other.
-        uint32_t h = he(seed, 0);
-        while (from_of(h) == target_ || to_of(h) == target_) ++h;
+        HalfedgeId h = Mesh::halfedge(seed, 0);
+        while (mesh_.from(h) == target_ || mesh_.to(h) == target_) h = Mesh::next(h);
         if (!passable(h))
-            throw RequestError("cannot end at target vertex " + std::to_string(target_) +
+            throw RequestError("cannot end at target vertex " + std::to_string(target_.idx()) +
                                ": its only face is the first face of the strip and cannot be split");
-        const Children sr = split_at(h);
+        const SplitResult sr = split_at(h);
         const bool a_first = source_ == kNone || has_vertex(sr.f_a, source_);
         seed = a_first ? sr.f_a : sr.f_b;
         dest = a_first ? sr.f_b : sr.f_a;
-        for (uint32_t f : {sr.f_b, sr.g_a}) region_[f] = r0;
-        region_size_[r0] += 2;
+        for (const FaceId f : {sr.f_b, sr.g_a}) region_[f] = kRegion0;
+        region_size_[kRegion0] += 2;
     }
     if (nf == 1) dest = kNone;
     return {seed, dest};
@@ -82,21 +79,21 @@ std::pair<uint32_t, uint32_t> Builder::choose_ends() {
 // face, where an interior vertex is one off the rim (a flat pass, no walk around the vertices).
 long long Builder::surface_chi() const {
     long long passable_halfedges = 0, interior_vertices = 0;
-    for (uint32_t h = 0; h < mesh_.num_halfedges(); ++h) passable_halfedges += passable(h);
-    for (uint32_t v = 0; v < mesh_.num_vertices(); ++v) interior_vertices += vertex_he_of(v) != kNone && !rim_[v];
+    for (const HalfedgeId h : mesh_.halfedges()) passable_halfedges += passable(h);
+    for (const VertexId v : mesh_.vertices()) interior_vertices += mesh_.vertex_halfedge(v) != kNone && !rim_[v];
     return static_cast<long long>(mesh_.num_faces()) - passable_halfedges / 2 + interior_vertices;
 }
 
 // Marks (stamp_base_) the faces of region 0 reachable from f without crossing striped faces.
-void Builder::mark_piece(uint32_t f) {
+void Builder::mark_piece(FaceId f) {
     stamp_base_ += 2;
     stamp_[f] = stamp_base_;
     scratch_.assign(1, f);
     while (!scratch_.empty()) {
-        const uint32_t x = scratch_.back();
+        const FaceId x = scratch_.back();
         scratch_.pop_back();
-        for (uint32_t k = 0; k < 3; ++k) {
-            const uint32_t g = open_neighbor(he(x, k), 0);
+        for (const HalfedgeId h : sides(x)) {
+            const FaceId g = open_neighbor(h, kRegion0);
             if (g != kNone && stamp_[g] != stamp_base_) {
                 stamp_[g] = stamp_base_;
                 scratch_.push_back(g);
@@ -106,17 +103,17 @@ void Builder::mark_piece(uint32_t f) {
 }
 
 // Moves the piece of region 0 holding f (not connected to the first piece) to a new region.
-uint32_t Builder::relabel_piece(uint32_t f) {
-    const uint32_t r = new_region(0);
+RegionId Builder::relabel_piece(FaceId f) {
+    const RegionId r = new_region(0);
     region_[f] = r;
     scratch_.assign(1, f);
     while (!scratch_.empty()) {
-        const uint32_t x = scratch_.back();
+        const FaceId x = scratch_.back();
         scratch_.pop_back();
         ++region_size_[r];
-        --region_size_[0];
-        for (uint32_t k = 0; k < 3; ++k) {
-            const uint32_t g = open_neighbor(he(x, k), 0);
+        --region_size_[kRegion0];
+        for (const HalfedgeId h : sides(x)) {
+            const FaceId g = open_neighbor(h, kRegion0);
             if (g != kNone) {
                 region_[g] = r;
                 scratch_.push_back(g);
@@ -130,47 +127,50 @@ uint32_t Builder::relabel_piece(uint32_t f) {
 // their Betti numbers, notes the seed as fundamental if it lowered the total (a face joining
 // two boundary loops, paper Fig. 4), defers every piece but the one to grow (the destination's,
 // or the first), anchored at the seed. Returns the region to grow. chi_all: surface_chi().
-uint32_t Builder::split_at_seed(uint32_t seed, uint32_t dest, long long chi_all) {
+RegionId Builder::split_at_seed(FaceId seed, FaceId dest, long long chi_all) {
     const long long beta_all = 1 - chi_all;
-    uint32_t nbr[3], arm[3], cnt = 0;
-    for (uint32_t k = 0; k < 3; ++k) {
-        const uint32_t g = open_neighbor(he(seed, k), 0);
+    FaceId nbr[3];
+    HalfedgeId arm[3];
+    uint32_t cnt = 0;
+    for (const HalfedgeId h : sides(seed)) {
+        const FaceId g = open_neighbor(h, kRegion0);
         if (g != kNone) {
             nbr[cnt] = g;
-            arm[cnt++] = he(seed, k);
+            arm[cnt++] = h;
         }
     }
     if (cnt <= 1) {
         // One piece: chi_of() of every face but the seed, from chi_all without another pass. The
         // seed takes one face and its cnt passable edges away, and its vertices off the rim are
         // no longer interior (their fans hold a striped face). Beta cannot drop: not fundamental.
-        if (cnt == 0) return 0;
+        if (cnt == 0) return kRegion0;
         long long interior = 0;
-        for (uint32_t k = 0; k < 3; ++k) interior += !rim_[from_of(he(seed, k))];
-        region_beta_[0] = beta_all + 1 - cnt + interior;
+        for (const HalfedgeId h : sides(seed)) interior += !rim_[mesh_.from(h)];
+        region_beta_[kRegion0] = beta_all + 1 - cnt + interior;
         if (opt_.validate_each_split) {  // tests: the same by chi_of() and a walk around every vertex
-            std::vector<uint32_t> rest;
-            for (uint32_t f = 0; f < mesh_.num_faces(); ++f)
+            std::vector<FaceId> rest;
+            for (const FaceId f : mesh_.faces())
                 if (!striped_[f]) rest.push_back(f);
-            if (region_beta_[0] != 1 - chi_of(rest, 0)) throw InternalError("strip builder: Betti number after the seed is wrong");
+            if (region_beta_[kRegion0] != 1 - chi_of(rest, kRegion0))
+                throw InternalError("strip builder: Betti number after the seed is wrong");
         }
-        return 0;
+        return kRegion0;
     }
-    uint32_t piece_region[3] = {0, kNone, kNone};
+    RegionId piece_region[3] = {kRegion0, kNone, kNone};
     for (uint32_t i = 1; i < cnt; ++i) {
         if (i == 1) mark_piece(nbr[0]);  // the first neighbour's piece keeps region 0
         if (stamp_[nbr[i]] == stamp_base_)
-            piece_region[i] = 0;
-        else if (region_[nbr[i]] != 0)  // relabelled with an earlier neighbour
+            piece_region[i] = kRegion0;
+        else if (region_[nbr[i]] != kRegion0)  // relabelled with an earlier neighbour
             piece_region[i] = region_[nbr[i]];
         else
             piece_region[i] = relabel_piece(nbr[i]);
     }
-    std::vector<std::vector<uint32_t>> members(region_size_.size());
-    for (uint32_t f = 0; f < mesh_.num_faces(); ++f)  // faces of a target pre-split too
+    IdVector<RegionId, std::vector<FaceId>> members(region_size_.size(), {});
+    for (const FaceId f : mesh_.faces())  // faces of a target pre-split too
         if (!striped_[f]) members[region_[f]].push_back(f);
     long long beta_pieces = 0;
-    for (uint32_t r = 0; r < members.size(); ++r) {
+    for (const RegionId r : IdRange<RegionId>(static_cast<uint32_t>(members.size()))) {
         if (members[r].empty()) continue;
         region_beta_[r] = 1 - chi_of(members[r], r);
         beta_pieces += region_beta_[r];
@@ -179,13 +179,13 @@ uint32_t Builder::split_at_seed(uint32_t seed, uint32_t dest, long long chi_all)
         fundamental_[seed] = 1;
         stats_.fundamental_triangles += static_cast<uint32_t>(beta_all - beta_pieces);
     }
-    const uint32_t grow_region = dest != kNone ? region_[dest] : 0;
-    std::vector<uint32_t> done_regions{grow_region};
+    const RegionId grow_region = dest != kNone ? region_[dest] : kRegion0;
+    std::vector<RegionId> done_regions{grow_region};
     for (uint32_t i = 0; i < cnt; ++i) {
-        const uint32_t r = piece_region[i];
+        const RegionId r = piece_region[i];
         if (std::find(done_regions.begin(), done_regions.end(), r) != done_regions.end()) continue;
         done_regions.push_back(r);
-        defer(r, twin_of(arm[i]));
+        defer(r, mesh_.twin(arm[i]));
     }
     return grow_region;
 }
@@ -194,10 +194,10 @@ uint32_t Builder::split_at_seed(uint32_t seed, uint32_t dest, long long chi_all)
 StripResult Builder::finish() {
     StripResult result;
     result.order.reserve(mesh_.num_faces());
-    for (uint32_t f = head_; f != kNone; f = next_[f]) {
+    for (FaceId f = head_; f != kNone; f = next_[f]) {
         if (result.order.size() > mesh_.num_faces()) throw InternalError("strip builder: strip list has a cycle");
         if (fundamental_[f]) result.fundamental_positions.push_back(static_cast<uint32_t>(result.order.size()));
-        result.order.push_back(f);
+        result.order.push_back(f.idx());
     }
     if (result.order.size() != mesh_.num_faces())
         throw InternalError("strip builder: strip covers " + std::to_string(result.order.size()) + " of " +
@@ -205,7 +205,7 @@ StripResult Builder::finish() {
     stats_.swaps += count_swaps(mesh_, result.order);
     stats_.output_triangles = mesh_.num_faces();
     result.stats = stats_;
-    result.take_time = std::move(time_);
+    result.take_time = std::move(time_).release();
     result.mesh = std::move(mesh_);
     return result;
 }
@@ -216,12 +216,12 @@ StripResult Builder::run() {
     const auto [seed, dest] = choose_ends();
     const long long chi_all = surface_chi();
     if (opt_.validate_each_split) {  // tests: the same by chi_of()
-        std::vector<uint32_t> all(mesh_.num_faces());
-        std::iota(all.begin(), all.end(), 0u);
-        if (chi_all != chi_of(all, 0)) throw InternalError("strip builder: chi of the surface is wrong");
+        std::vector<FaceId> all;
+        for (const FaceId f : mesh_.faces()) all.push_back(f);
+        if (chi_all != chi_of(all, kRegion0)) throw InternalError("strip builder: chi of the surface is wrong");
     }
     take(kNone, seed);
-    const uint32_t region = split_at_seed(seed, dest, chi_all);
+    const RegionId region = split_at_seed(seed, dest, chi_all);
     grow(seed, region, dest);
     absorb_all();
     return finish();
@@ -260,10 +260,12 @@ StripArrays strip_arrays(const StripResult& result) {
     out.points = result.mesh.points();
     out.faces.reserve(result.order.size());
     out.parent.reserve(result.order.size());
-    const auto& cv = result.mesh.corner_vertices();
-    for (uint32_t f : result.order) {
-        out.faces.push_back({cv[3 * f], cv[3 * f + 1], cv[3 * f + 2]});
-        out.parent.push_back(result.mesh.parent(FaceId(f)).idx());
+    const Mesh& mesh = result.mesh;
+    for (const uint32_t i : result.order) {
+        const FaceId f(i);
+        const HalfedgeId h = Mesh::halfedge(f, 0);
+        out.faces.push_back({mesh.from(h).idx(), mesh.to(h).idx(), mesh.opposite(h).idx()});
+        out.parent.push_back(mesh.parent(f).idx());
     }
     return out;
 }

@@ -42,37 +42,36 @@ std::string piece_sizes(std::vector<uint32_t> sizes) {
 }
 
 // Sizes of the face pieces connected through interior edges that are not blocked.
-std::vector<uint32_t> pieces(const Mesh& mesh, const std::vector<uint8_t>& blocked) {
-    const uint32_t nf = mesh.num_faces();
-    std::vector<uint8_t> seen(nf, 0);
-    std::vector<uint32_t> sizes, stack;
-    for (uint32_t f0 = 0; f0 < nf; ++f0) {
+std::vector<uint32_t> pieces(const Mesh& mesh, const EdgeFlags& blocked) {
+    IdVector<FaceId, uint8_t> seen(mesh.num_faces(), 0);
+    std::vector<uint32_t> sizes;
+    std::vector<FaceId> stack;
+    for (const FaceId f0 : mesh.faces()) {
         if (seen[f0]) continue;
         sizes.push_back(0);
         seen[f0] = 1;
         stack.assign(1, f0);
         while (!stack.empty()) {
-            const FaceId f(stack.back());
+            const FaceId f = stack.back();
             stack.pop_back();
             ++sizes.back();
-            for (uint32_t k = 0; k < 3; ++k) {
-                const HalfedgeId h = Mesh::halfedge(f, k);
+            for (const HalfedgeId h : sides(f)) {
                 const FaceId g = mesh.neighbor(h);
-                if (g == kNone || blocked[h.idx()] || seen[g.idx()]) continue;
-                seen[g.idx()] = 1;
-                stack.push_back(g.idx());
+                if (g == kNone || blocked[h] || seen[g]) continue;
+                seen[g] = 1;
+                stack.push_back(g);
             }
         }
     }
     return sizes;
 }
 
-void check_vertex(const Mesh& mesh, const char* what, uint32_t v) {
-    if (v >= mesh.num_input_vertices())
-        throw RequestError(std::string(what) + " vertex " + std::to_string(v) + " is out of range (mesh has " +
+void check_vertex(const Mesh& mesh, const char* what, VertexId v) {
+    if (v.idx() >= mesh.num_input_vertices())
+        throw RequestError(std::string(what) + " vertex " + std::to_string(v.idx()) + " is out of range (mesh has " +
                            std::to_string(mesh.num_input_vertices()) + " vertices)");
-    if (mesh.vertex_halfedge(VertexId(v)) == kNone)
-        throw RequestError(std::string(what) + " vertex " + std::to_string(v) + " is not used by any face");
+    if (mesh.vertex_halfedge(v) == kNone)
+        throw RequestError(std::string(what) + " vertex " + std::to_string(v.idx()) + " is not used by any face");
 }
 
 }  // namespace
@@ -83,36 +82,36 @@ void check_strip_request(const Mesh& mesh, const StripOptions& opt) {
     if (opt.seed_face && opt.seed_face->idx() >= nf)
         throw RequestError("seed face " + std::to_string(opt.seed_face->idx()) + " is out of range (mesh has " + std::to_string(nf) +
                            " faces)");
-    if (opt.source) check_vertex(mesh, "source", opt.source->idx());
-    if (opt.target) check_vertex(mesh, "target", opt.target->idx());
-    if (opt.seed_face && opt.source && !face_has_vertex(mesh, opt.seed_face->idx(), opt.source->idx()))
+    if (opt.source) check_vertex(mesh, "source", *opt.source);
+    if (opt.target) check_vertex(mesh, "target", *opt.target);
+    if (opt.seed_face && opt.source && !face_has_vertex(mesh, *opt.seed_face, *opt.source))
         throw RequestError("seed face " + std::to_string(opt.seed_face->idx()) + " is not incident to source vertex " +
                            std::to_string(opt.source->idx()));
 }
 
-uint32_t find_halfedge(const Mesh& mesh, uint32_t u, uint32_t v) {
-    if (u >= mesh.num_vertices() || v >= mesh.num_vertices()) return kNone;
+HalfedgeId find_halfedge(const Mesh& mesh, VertexId u, VertexId v) {
+    if (u.idx() >= mesh.num_vertices() || v.idx() >= mesh.num_vertices()) return kNone;
     HalfedgeId found = kNone;
-    for_each_outgoing(mesh, VertexId(u), [&](HalfedgeId h) {
-        if (mesh.to(h) == VertexId(v))
+    for_each_outgoing(mesh, u, [&](HalfedgeId h) {
+        if (mesh.to(h) == v)
             found = h;
-        else if (mesh.from(Mesh::prev(h)) == VertexId(v))
+        else if (mesh.from(Mesh::prev(h)) == v)
             found = Mesh::prev(h);
         return found != kNone;
     });
-    return found.idx();
+    return found;
 }
 
-std::vector<uint8_t> constraint_halfedges(const Mesh& mesh, const StripOptions& opt) {
-    std::vector<uint8_t> blocked(mesh.num_halfedges(), 0);
+EdgeFlags constraint_halfedges(const Mesh& mesh, const StripOptions& opt) {
+    EdgeFlags blocked(mesh.num_halfedges(), 0);
     size_t index = 0;
     for (const ConstraintEdge& e : opt.constraint_edges) {
-        const uint32_t h = find_halfedge(mesh, e.a, e.b);
+        const HalfedgeId h = find_halfedge(mesh, VertexId(e.a), VertexId(e.b));
         if (h == kNone)
             throw RequestError("constraint " + std::to_string(index) + ": (" + std::to_string(e.a) + ", " + std::to_string(e.b) +
                                ") is not an edge of the mesh");
         blocked[h] = 1;
-        if (!mesh.is_boundary(HalfedgeId(h))) blocked[mesh.twin(HalfedgeId(h)).idx()] = 1;
+        if (!mesh.is_boundary(h)) blocked[mesh.twin(h)] = 1;
         ++index;
     }
     if (opt.constraint_edges.empty()) return blocked;
@@ -123,13 +122,13 @@ std::vector<uint8_t> constraint_halfedges(const Mesh& mesh, const StripOptions& 
     return blocked;
 }
 
-uint32_t face_at_vertex(const Mesh& mesh, const std::vector<uint8_t>& blocked, uint32_t v, uint32_t avoid) {
-    uint32_t best = kNone;
+FaceId face_at_vertex(const Mesh& mesh, const EdgeFlags& blocked, VertexId v, FaceId avoid) {
+    FaceId best = kNone;
     int best_score = -1;
-    for_each_outgoing(mesh, VertexId(v), [&](HalfedgeId h) {
-        const uint32_t f = Mesh::face(h).idx();
+    for_each_outgoing(mesh, v, [&](HalfedgeId h) {
+        const FaceId f = Mesh::face(h);
         int score = 0;
-        for (uint32_t k = 3 * f; k < 3 * f + 3; ++k) score += mesh.is_boundary(HalfedgeId(k)) || blocked[k];
+        for (const HalfedgeId e : sides(f)) score += mesh.is_boundary(e) || blocked[e];
         if (f == avoid) score = -1;
         if (score > best_score || best == kNone) {
             best_score = score;

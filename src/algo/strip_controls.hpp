@@ -5,10 +5,15 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/face_sides.hpp"
+#include "core/id_vector.hpp"
 #include "singlestrip/mesh.hpp"
 #include "singlestrip/strip.hpp"
 
 namespace singlestrip {
+
+/// A flag per half-edge (as the constraint edges).
+using EdgeFlags = IdVector<HalfedgeId, uint8_t>;
 
 /// \throw InputError if the mesh has no faces; RequestError for a seed face, source or target out
 /// of range or unused, or a seed face not incident to the source. O(1).
@@ -17,18 +22,19 @@ void check_strip_request(const Mesh& mesh, const StripOptions& options);
 /// Per half-edge: 1 on the constraint edges (both half-edges). \throw RequestError naming the
 /// first pair that is not an edge, or giving the pieces' sizes when the constraints cut the faces
 /// apart. O(F + sum of the degrees of the constraint vertices).
-std::vector<uint8_t> constraint_halfedges(const Mesh& mesh, const StripOptions& options);
+EdgeFlags constraint_halfedges(const Mesh& mesh, const StripOptions& options);
 
-/// The half-edge u->v or v->u, or kNone. O(degree of u), any degree.
-uint32_t find_halfedge(const Mesh& mesh, uint32_t u, uint32_t v);
+/// The half-edge u->v or v->u, or kNone (also for a vertex out of range). O(degree of u), any
+/// degree.
+HalfedgeId find_halfedge(const Mesh& mesh, VertexId u, VertexId v);
 
 /// A face at vertex v with the most sides that are boundary or blocked; `avoid` only when no other
 /// face exists. kNone if v has no face. O(degree of v).
-uint32_t face_at_vertex(const Mesh& mesh, const std::vector<uint8_t>& blocked, uint32_t v, uint32_t avoid);
+FaceId face_at_vertex(const Mesh& mesh, const EdgeFlags& blocked, VertexId v, FaceId avoid);
 
-[[nodiscard]] inline bool face_has_vertex(const Mesh& mesh, uint32_t f, uint32_t v) {
-    const auto& cv = mesh.corner_vertices();
-    return cv[3 * f] == v || cv[3 * f + 1] == v || cv[3 * f + 2] == v;
+[[nodiscard]] inline bool face_has_vertex(const Mesh& mesh, FaceId f, VertexId v) {
+    const HalfedgeId h = Mesh::halfedge(f, 0);
+    return mesh.from(h) == v || mesh.to(h) == v || mesh.opposite(h) == v;
 }
 
 /// Consecutive turns in the same direction along `order` (each costs one GL index).

@@ -25,10 +25,6 @@
 
 namespace singlestrip::matching {
 
-static bool has_vertex(const Mesh& mesh, FaceId f, VertexId v) {
-    return face_has_vertex(mesh, f.idx(), v.idx());
-}
-
 // Pinned faces: the strip starts at pins_[0] and ends at pins_[1] (either may be absent).
 void MatchingBuilder::choose_pins() {
     const uint32_t nf = mesh_.num_faces();
@@ -36,9 +32,9 @@ void MatchingBuilder::choose_pins() {
     if (opt_.seed_face)
         first = *opt_.seed_face;
     else if (opt_.source)
-        first = FaceId(face_at_vertex(mesh_, blocked_.plain(), opt_.source->idx(), kNone));
+        first = face_at_vertex(mesh_, blocked_, *opt_.source, kNone);
     if (opt_.target && nf > 1) {
-        last = FaceId(face_at_vertex(mesh_, blocked_.plain(), opt_.target->idx(), first.idx()));
+        last = face_at_vertex(mesh_, blocked_, *opt_.target, first);
         if (last == first) {
             // The target's only face is the first face: split it across the edge opposite the
             // target so that both children touch it; start in one, end in the other.
@@ -48,7 +44,7 @@ void MatchingBuilder::choose_pins() {
                 throw RequestError("cannot end at target vertex " + std::to_string(opt_.target->idx()) +
                                    ": its only face is the first face of the strip and cannot be split");
             const SplitResult sr = split(h);
-            const bool a_first = !opt_.source || has_vertex(mesh_, sr.f_a, *opt_.source);
+            const bool a_first = !opt_.source || face_has_vertex(mesh_, sr.f_a, *opt_.source);
             first = a_first ? sr.f_a : sr.f_b;
             last = a_first ? sr.f_b : sr.f_a;
         }
@@ -88,9 +84,9 @@ SplitResult MatchingBuilder::split(HalfedgeId h) {
         const VertexId v = (i == 0 && !reversed_) ? pin_vertex[0] : pin_vertex[1];
         if (v == kNone) continue;
         const FaceId old = pins_[i];
-        if (old == sr.f_a && !has_vertex(mesh_, sr.f_a, v))
+        if (old == sr.f_a && !face_has_vertex(mesh_, sr.f_a, v))
             pins_[i] = sr.f_b;
-        else if (old == sr.g_b && !has_vertex(mesh_, sr.g_b, v))
+        else if (old == sr.g_b && !face_has_vertex(mesh_, sr.g_b, v))
             pins_[i] = sr.g_a;
         if (pins_[i] != old) std::swap(vlink_[old], vlink_[pins_[i]]);  // the virtual link moves along
     }
@@ -391,7 +387,7 @@ StripResult MatchingBuilder::finish(std::vector<uint32_t> order) {
 StripResult MatchingBuilder::grow(Mesh mesh, uint32_t splits) const {
     StripOptions o = opt_;
     o.engine = StripEngine::Growth;
-    if (o.seed_face && o.source && !has_vertex(mesh, *o.seed_face, *o.source)) o.seed_face.reset();
+    if (o.seed_face && o.source && !face_has_vertex(mesh, *o.seed_face, *o.source)) o.seed_face.reset();
     try {
         StripResult r = build_strip_growth(std::move(mesh), o);
         r.stats.splits += splits;
@@ -484,7 +480,7 @@ Mesh MatchingBuilder::input_mesh() const {
 StripResult MatchingBuilder::run() {
     const uint32_t nf = mesh_.num_faces();
     check_strip_request(mesh_, opt_);
-    blocked_ = EdgeFlags(constraint_halfedges(mesh_, opt_));
+    blocked_ = constraint_halfedges(mesh_, opt_);
     stats_.input_triangles = nf;
     stats_.boundary_loops = mesh_.num_boundary_loops();
     stats_.genus = mesh_.genus();

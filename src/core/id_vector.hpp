@@ -30,9 +30,14 @@ public:
     void assign(size_t n, const T& value) { v_.assign(n, value); }
     void clear() noexcept { v_.clear(); }
     void push_back(const T& value) { v_.push_back(value); }
+    void pop_back() noexcept { v_.pop_back(); }
+    [[nodiscard]] T& back() noexcept { return v_.back(); }
+    [[nodiscard]] const T& back() const noexcept { return v_.back(); }
     void swap(IdVector& other) noexcept { v_.swap(other.v_); }
     /// The plain array, for interfaces that take one.
     [[nodiscard]] const std::vector<T>& plain() const noexcept { return v_; }
+    /// The plain array moved out, for results that keep one (the array is left empty).
+    [[nodiscard]] std::vector<T> release() && noexcept { return std::move(v_); }
 
 private:
     std::vector<T> v_;
