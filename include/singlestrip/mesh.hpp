@@ -168,6 +168,11 @@ public:
     /// \throw InternalError if the precondition is violated.
     SplitResult split_edge(HalfedgeId h);
 
+    /// Room for `splits` more split_edge() calls without moving the arrays. A builder that will
+    /// split calls it before allocating its own arrays: growing the mesh later copies each array
+    /// while the builder's exist (the growth builder's memory peak). O(F) once.
+    void reserve_splits(uint32_t splits);
+
     /// Moves the vertex positions out and leaves an empty mesh: for a caller done with the mesh
     /// that needs its points (the output arrays), without a second copy at the peak.
     [[nodiscard]] std::vector<Point3> release_points() &&;

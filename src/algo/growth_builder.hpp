@@ -106,7 +106,9 @@ private:
         return n;
     }
 
-    void grow_arrays();
+    /// Sizes the per-element arrays to the mesh; room for spare_faces more faces (and their
+    /// half-edges and midpoints) is reserved on top.
+    void grow_arrays(uint32_t spare_faces = 0);
     long long chi_of(const std::vector<FaceId>& faces, RegionId r);
     void note_fundamental(FaceId f, RegionId r);
     RegionId new_region(uint32_t size);

@@ -11,24 +11,25 @@
 
 namespace singlestrip::growth {
 
-void Builder::grow_arrays() {
+void Builder::grow_arrays(uint32_t spare_faces) {
     // Gently: splits add a few percent, and doubling 11 arrays would add up to 34 bytes a face.
-    auto fit = [](auto& v, uint32_t n, auto value) {
-        reserve_gently(v, n);
+    auto fit = [](auto& v, uint32_t n, uint32_t spare, auto value) {
+        reserve_gently(v, size_t{n} + spare);
         v.resize(n, value);
     };
     const uint32_t nf = mesh_.num_faces(), nh = mesh_.num_halfedges(), nv = mesh_.num_vertices();
-    fit(striped_, nf, 0);
-    fit(region_, nf, kNone);
-    fit(next_, nf, kNone);
-    fit(prev_, nf, kNone);
-    fit(stamp_, nf, 0);
-    fit(fundamental_, nf, 0);
-    fit(time_, nf, kNone);
-    fit(blocked_, nh, 0);
-    fit(vstamp_, nv, 0);
-    fit(striped_at_, nv, 0);
-    fit(rim_, nv, 0);
+    const uint32_t sf = spare_faces, sh = 3 * spare_faces, sv = spare_faces / 2;
+    fit(striped_, nf, sf, 0);
+    fit(region_, nf, sf, kNone);
+    fit(next_, nf, sf, kNone);
+    fit(prev_, nf, sf, kNone);
+    fit(stamp_, nf, sf, 0);
+    fit(fundamental_, nf, sf, 0);
+    fit(time_, nf, sf, kNone);
+    fit(blocked_, nh, sh, 0);
+    fit(vstamp_, nv, sv, 0);
+    fit(striped_at_, nv, sv, 0);
+    fit(rim_, nv, sv, 0);
 }
 
 void Builder::count_striped(FaceId f, int delta) {

@@ -480,6 +480,7 @@ Mesh MatchingBuilder::input_mesh() const {
 StripResult MatchingBuilder::run() {
     const uint32_t nf = mesh_.num_faces();
     check_strip_request(mesh_, opt_);
+    mesh_.reserve_splits(nf / 32 + 64);  // ears, bridges and joins: a few percent (see the growth builder's prepare())
     blocked_ = constraint_halfedges(mesh_, opt_);
     stats_.input_triangles = nf;
     stats_.boundary_loops = mesh_.num_boundary_loops();

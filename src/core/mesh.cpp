@@ -163,6 +163,14 @@ SplitResult Mesh::split_edge(HalfedgeId he) {
     return SplitResult{VertexId(mid), FaceId(f), FaceId(fb), FaceId(ga), FaceId(g)};
 }
 
+void Mesh::reserve_splits(uint32_t splits) {
+    points_.reserve(points_.size() + splits);
+    vertex_halfedge_.reserve(vertex_halfedge_.size() + splits);
+    corner_vertex_.reserve(corner_vertex_.size() + size_t{6} * splits);
+    twin_.reserve(twin_.size() + size_t{6} * splits);
+    face_parent_.reserve(face_parent_.size() + size_t{2} * splits);
+}
+
 void Mesh::reserve_for_split() {
     reserve_gently(points_, points_.size() + 1);
     reserve_gently(vertex_halfedge_, vertex_halfedge_.size() + 1);
