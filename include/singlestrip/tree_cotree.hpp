@@ -46,20 +46,23 @@ public:
     [[nodiscard]] size_t dimension() const noexcept { return leftover_.size(); }
     /// Class of a closed chain of MESH faces (consecutive entries and last -> first adjacent).
     /// \throw InternalError if two consecutive faces are not adjacent.
-    [[nodiscard]] std::vector<uint64_t> classify(const std::vector<uint32_t>& mesh_faces) const;
+    [[nodiscard]] std::vector<uint64_t> classify(const std::vector<FaceId>& mesh_faces) const;
     /// The tree–cotree generator of class bit j (as tree_cotree_generators() builds it, MESH
     /// faces): its class is the j-th unit vector. \pre j < dimension(). O(its length).
-    [[nodiscard]] std::vector<uint32_t> generator(size_t j) const;
+    [[nodiscard]] std::vector<FaceId> generator(size_t j) const;
     /// Its number of faces, without building it. O(its length), no allocation.
     [[nodiscard]] size_t generator_length(size_t j) const;
 
 private:
     const Mesh* mesh_;
-    std::vector<uint32_t> fparent_, depth_;  ///< cotree parent face and depth per face
-    std::vector<uint32_t> leftover_he_;      ///< leftover edge -> representative half-edge
-    std::vector<uint32_t> edge_of_he_;       ///< half-edge -> interior edge id (kNone on boundary)
-    std::vector<uint32_t> leftover_;         ///< leftover edge ids (one per class bit)
-    std::vector<uint32_t> bit_of_edge_;      ///< interior edge -> its class bit if leftover, else kNone
+    // Per-face and per-half-edge arrays are plain vectors, read through typed views in the
+    // source: the per-id array types are internal.
+    std::vector<FaceId> fparent_;          ///< cotree parent face per face (kNone at the root)
+    std::vector<uint32_t> depth_;          ///< cotree depth per face
+    std::vector<HalfedgeId> leftover_he_;  ///< leftover edge -> representative half-edge
+    std::vector<uint32_t> edge_of_he_;     ///< half-edge -> interior edge id (kNone on boundary)
+    std::vector<uint32_t> leftover_;       ///< leftover edge ids (one per class bit)
+    std::vector<uint32_t> bit_of_edge_;    ///< interior edge -> its class bit if leftover, else kNone
     /// Interior edge -> preorder interval [first, last) of the leftover endpoints (indices into
     /// end_bit_) in the subtree below it, if it is a tree edge; else first == last.
     std::vector<uint32_t> under_first_, under_last_;

@@ -7,6 +7,8 @@
 #include <string>
 #include <utility>
 
+#include "core/face_sides.hpp"
+#include "core/id_vector.hpp"
 #include "singlestrip/errors.hpp"
 #include "singlestrip/tree_cotree.hpp"
 
@@ -22,40 +24,41 @@ public:
 
     /// Shortest chain of edge-adjacent faces from `from` to `to` (both included) avoiding `avoid`;
     /// with `time`, only through faces whose time is greater than `after`. Empty if there is none.
-    std::vector<uint32_t> path(uint32_t from, uint32_t to, uint32_t avoid, const std::vector<uint32_t>* time = nullptr,
-                               uint32_t after = 0) {
+    std::vector<FaceId> path(FaceId from, FaceId to, FaceId avoid, const IdSpan<FaceId, uint32_t>* time = nullptr, uint32_t after = 0) {
         if (++current_ == 0) {  // stamps wrapped: forget them all once
-            std::fill(stamp_.begin(), stamp_.end(), 0);
+            stamp_.assign(stamp_.size(), 0);
             current_ = 1;
         }
         queue_.assign(1, from);
         visit(from, from);
         for (size_t head = 0; head < queue_.size() && !seen(to); ++head) {
-            const uint32_t f = queue_[head];
-            for (uint32_t k = 0; k < 3; ++k) {
-                const uint32_t g = mesh_.neighbor(Mesh::halfedge(FaceId(f), k)).idx();
-                if (g == kNone || g == avoid || seen(g)) continue;
+            const FaceId f = queue_[head];
+            for (const HalfedgeId h : sides(f)) {
+                const FaceId g = mesh_.neighbor(h);
+                if (!g.valid() || g == avoid || seen(g)) continue;
                 if (time && ((*time)[g] == kNone || (*time)[g] <= after)) continue;
                 visit(g, f);
                 queue_.push_back(g);
             }
         }
         if (!seen(to)) return {};
-        std::vector<uint32_t> chain;
-        for (uint32_t f = to; f != from; f = parent_[f]) chain.push_back(f);
+        std::vector<FaceId> chain;
+        for (FaceId f = to; f != from; f = parent_[f]) chain.push_back(f);
         chain.push_back(from);
         std::reverse(chain.begin(), chain.end());
         return chain;
     }
 
 private:
-    [[nodiscard]] bool seen(uint32_t f) const { return stamp_[f] == current_; }
-    void visit(uint32_t f, uint32_t parent) {
+    [[nodiscard]] bool seen(FaceId f) const { return stamp_[f] == current_; }
+    void visit(FaceId f, FaceId parent) {
         stamp_[f] = current_;
         parent_[f] = parent;
     }
     const Mesh& mesh_;
-    std::vector<uint32_t> stamp_, parent_, queue_;
+    IdVector<FaceId, uint32_t> stamp_;
+    IdVector<FaceId, FaceId> parent_;
+    std::vector<FaceId> queue_;
     uint32_t current_ = 0;
 };
 
@@ -94,9 +97,8 @@ struct MeshFaces {
     const Mesh& mesh;
     const std::vector<uint32_t>& order;
     [[nodiscard]] Triangle face(uint32_t f) const {
-        const auto& cv = mesh.corner_vertices();
-        const uint32_t g = order[f];
-        return {cv[3 * g], cv[3 * g + 1], cv[3 * g + 2]};
+        const FaceId g(order[f]);
+        return {mesh.from(Mesh::halfedge(g, 0)).idx(), mesh.from(Mesh::halfedge(g, 1)).idx(), mesh.from(Mesh::halfedge(g, 2)).idx()};
     }
     [[nodiscard]] const Point3& point(uint32_t v) const { return mesh.position(VertexId(v)); }
 };
@@ -154,9 +156,11 @@ double length_of(const Faces& faces, const std::vector<uint32_t>& cycle) {
 /// (the strip positions when the fundamental triangles were replayed).
 struct StripView {
     const Mesh& mesh;
-    const std::vector<uint32_t>& order;
-    const std::vector<uint32_t>& pos;
-    const std::vector<uint32_t>& take_time;
+    const std::vector<uint32_t>& order;  ///< position -> face (StripResult::order)
+    IdSpan<FaceId, uint32_t> pos;        ///< face -> position
+    IdSpan<FaceId, uint32_t> take_time;
+    /// The face at strip position p.
+    [[nodiscard]] FaceId at(uint32_t p) const { return FaceId(order[p]); }
 };
 
 /// A candidate cycle through a fundamental triangle, as MESH faces. A strip segment (T and
@@ -164,46 +168,47 @@ struct StripView {
 /// most candidates are never looked at.
 struct Candidate {
     CycleSource source = CycleSource::StripSegment;
-    std::vector<uint32_t> faces;
+    std::vector<FaceId> faces;
     bool lazy = false;
-    uint32_t t = kNone, lo = 0, hi = 0;
+    FaceId t = kNone;
+    uint32_t lo = 0, hi = 0;  ///< strip positions
     [[nodiscard]] size_t size() const { return lazy ? size_t{hi} - lo + 2 : faces.size(); }
-    const std::vector<uint32_t>& materialize(const std::vector<uint32_t>& order) {
+    const std::vector<FaceId>& materialize(const std::vector<uint32_t>& order) {
         if (!lazy) return faces;
         faces.reserve(size());
         faces.push_back(t);
-        for (uint32_t k = lo; k <= hi; ++k) faces.push_back(order[k]);
+        for (uint32_t k = lo; k <= hi; ++k) faces.push_back(FaceId(order[k]));
         lazy = false;
         return faces;
     }
 };
 
 /// T's distinct neighbours, largest position first (D = [0], S = [1], Algorithm 3).
-std::vector<uint32_t> neighbors_by_position(const StripView& v, uint32_t t, uint32_t p) {
-    std::vector<uint32_t> nb;
-    for (uint32_t k = 0; k < 3; ++k) {
-        const FaceId g = v.mesh.neighbor(Mesh::halfedge(FaceId(t), k));
-        if (g.valid() && std::find(nb.begin(), nb.end(), g.idx()) == nb.end()) nb.push_back(g.idx());
+std::vector<FaceId> neighbors_by_position(const StripView& v, FaceId t, uint32_t p) {
+    std::vector<FaceId> nb;
+    for (const HalfedgeId h : sides(t)) {
+        const FaceId g = v.mesh.neighbor(h);
+        if (g.valid() && std::find(nb.begin(), nb.end(), g) == nb.end()) nb.push_back(g);
     }
     if (nb.size() < 2)
         throw InternalError("fundamental cycles: fundamental triangle at position " + std::to_string(p) + " has fewer than two neighbours");
-    std::sort(nb.begin(), nb.end(), [&](uint32_t a, uint32_t b) { return v.pos[a] > v.pos[b]; });
+    std::sort(nb.begin(), nb.end(), [&](FaceId a, FaceId b) { return v.pos[a] > v.pos[b]; });
     return nb;
 }
 
 // (1) Algorithm 4, steepest ascent from S: the neighbour with the largest position not beyond
 // D's. Positions strictly increase (the strip successor is a neighbour): it terminates; empty
 // when it runs into T or exceeds `budget` faces.
-std::vector<uint32_t> steepest_ascent(const StripView& v, uint32_t t, uint32_t s, uint32_t d, size_t budget) {
-    std::vector<uint32_t> up{t, s};
-    for (uint32_t cur = s; cur != d;) {
-        uint32_t best = kNone;
-        for (uint32_t k = 0; k < 3; ++k) {
-            const uint32_t g = v.mesh.neighbor(Mesh::halfedge(FaceId(cur), k)).idx();
-            if (g == kNone || g == t || v.pos[g] > v.pos[d]) continue;
-            if (best == kNone || v.pos[g] > v.pos[best]) best = g;
+std::vector<FaceId> steepest_ascent(const StripView& v, FaceId t, FaceId s, FaceId d, size_t budget) {
+    std::vector<FaceId> up{t, s};
+    for (FaceId cur = s; cur != d;) {
+        FaceId best = kNone;
+        for (const HalfedgeId h : sides(cur)) {
+            const FaceId g = v.mesh.neighbor(h);
+            if (!g.valid() || g == t || v.pos[g] > v.pos[d]) continue;
+            if (!best.valid() || v.pos[g] > v.pos[best]) best = g;
         }
-        if (best == kNone || v.pos[best] <= v.pos[cur] || up.size() > budget) return {};
+        if (!best.valid() || v.pos[best] <= v.pos[cur] || up.size() > budget) return {};
         up.push_back(cur = best);
     }
     return up;
@@ -211,16 +216,16 @@ std::vector<uint32_t> steepest_ascent(const StripView& v, uint32_t t, uint32_t s
 
 // (2) The mirror image, steepest descent from D: the neighbour with the smallest position not
 // below S's; a different shortcut, used when shorter or when (1) is rejected.
-std::vector<uint32_t> steepest_descent(const StripView& v, uint32_t t, uint32_t s, uint32_t d, size_t budget) {
-    std::vector<uint32_t> down{d};
-    for (uint32_t cur = d; cur != s;) {
-        uint32_t best = kNone;
-        for (uint32_t k = 0; k < 3; ++k) {
-            const uint32_t g = v.mesh.neighbor(Mesh::halfedge(FaceId(cur), k)).idx();
-            if (g == kNone || g == t || v.pos[g] < v.pos[s]) continue;
-            if (best == kNone || v.pos[g] < v.pos[best]) best = g;
+std::vector<FaceId> steepest_descent(const StripView& v, FaceId t, FaceId s, FaceId d, size_t budget) {
+    std::vector<FaceId> down{d};
+    for (FaceId cur = d; cur != s;) {
+        FaceId best = kNone;
+        for (const HalfedgeId h : sides(cur)) {
+            const FaceId g = v.mesh.neighbor(h);
+            if (!g.valid() || g == t || v.pos[g] < v.pos[s]) continue;
+            if (!best.valid() || v.pos[g] < v.pos[best]) best = g;
         }
-        if (best == kNone || v.pos[best] >= v.pos[cur] || down.size() > budget) return {};
+        if (!best.valid() || v.pos[best] >= v.pos[cur] || down.size() > budget) return {};
         down.push_back(cur = best);
     }
     std::reverse(down.begin(), down.end());  // S .. D
@@ -231,15 +236,15 @@ std::vector<uint32_t> steepest_descent(const StripView& v, uint32_t t, uint32_t 
 // (5) The paper's parallel path, shortest: T's neighbours taken after T were joined, when T was
 // taken, by the faces still unstriped then (the faces taken later); a breadth-first path
 // through those closes the cycle. Independent of strip positions.
-std::vector<std::vector<uint32_t>> parallel_paths(const StripView& v, FaceSearch& search, uint32_t t, const std::vector<uint32_t>& nb) {
+std::vector<std::vector<FaceId>> parallel_paths(const StripView& v, FaceSearch& search, FaceId t, const std::vector<FaceId>& nb) {
     const uint32_t tt = v.take_time[t];
-    std::vector<uint32_t> later;
-    for (uint32_t g : nb)
+    std::vector<FaceId> later;
+    for (const FaceId g : nb)
         if (v.take_time[g] != kNone && v.take_time[g] > tt) later.push_back(g);
-    std::vector<std::vector<uint32_t>> paths;
+    std::vector<std::vector<FaceId>> paths;
     for (size_t x = 0; x < later.size(); ++x)
         for (size_t y = x + 1; y < later.size(); ++y) {
-            std::vector<uint32_t> path = search.path(later[x], later[y], t, &v.take_time, tt);
+            std::vector<FaceId> path = search.path(later[x], later[y], t, &v.take_time, tt);
             if (path.empty()) continue;
             path.insert(path.begin(), t);
             paths.push_back(std::move(path));
@@ -250,20 +255,20 @@ std::vector<std::vector<uint32_t>> parallel_paths(const StripView& v, FaceSearch
 /// Every candidate of the fundamental triangle at position p, shortest first (ties in the order
 /// of the header's list).
 std::vector<Candidate> candidates_for(const StripView& v, FaceSearch& search, uint32_t p) {
-    const uint32_t t = v.order[p];
-    const std::vector<uint32_t> nb = neighbors_by_position(v, t, p);
-    const uint32_t d = nb[0], s = nb[1];
+    const FaceId t = v.at(p);
+    const std::vector<FaceId> nb = neighbors_by_position(v, t, p);
+    const FaceId d = nb[0], s = nb[1];
     // The breadth-first candidates first: the walks (1) and (2) may follow the strip for as long
     // as it is, so they stop at a few times the shortest of those (they would not be kept).
-    std::vector<uint32_t> around = search.path(s, d, t);  // (4)
+    std::vector<FaceId> around = search.path(s, d, t);  // (4)
     if (!around.empty()) around.insert(around.begin(), t);
-    std::vector<std::vector<uint32_t>> parallel = parallel_paths(v, search, t, nb);
+    std::vector<std::vector<FaceId>> parallel = parallel_paths(v, search, t, nb);
     size_t shortest = around.empty() ? v.order.size() : around.size();
     for (const auto& path : parallel) shortest = std::min(shortest, path.size());
     const size_t budget = shortest >= v.order.size() ? v.order.size() : 4 * shortest + 64;
 
     std::vector<Candidate> cand;
-    auto add = [&](CycleSource source, std::vector<uint32_t> faces) {
+    auto add = [&](CycleSource source, std::vector<FaceId> faces) {
         if (!faces.empty()) cand.push_back({source, std::move(faces)});
     };
     add(CycleSource::SteepestAscent, steepest_ascent(v, t, s, d, budget));
@@ -310,12 +315,12 @@ std::vector<uint64_t> unit_class(size_t dim, size_t j) {
 }
 
 /// Face -> position in `order`. \throw InternalError if `order` is not a permutation of the faces.
-std::vector<uint32_t> positions_of(const std::vector<uint32_t>& order, uint32_t nf) {
+IdVector<FaceId, uint32_t> positions_of(const std::vector<uint32_t>& order, uint32_t nf) {
     if (order.size() != nf) throw InternalError("fundamental cycles: strip order does not cover the mesh");
-    std::vector<uint32_t> pos(nf, kNone);
+    IdVector<FaceId, uint32_t> pos(nf, kNone);
     for (uint32_t i = 0; i < nf; ++i) {
-        const uint32_t f = order[i];
-        if (f >= nf || pos[f] != kNone) throw InternalError("fundamental cycles: strip order is not a permutation");
+        const FaceId f(order[i]);
+        if (f.idx() >= nf || pos[f] != kNone) throw InternalError("fundamental cycles: strip order is not a permutation");
         pos[f] = i;
     }
     return pos;
@@ -350,9 +355,9 @@ bool choose_nested(const StripView& v, FaceSearch& search, const std::vector<uin
         const uint32_t p = fundamental[i];
         if (p == 0 || (i > 0 && p <= fundamental[i - 1])) return false;
         uint32_t later = 0;
-        for (uint32_t k = 0; k < 3; ++k) {
-            const FaceId g = v.mesh.neighbor(Mesh::halfedge(FaceId(v.order[p]), k));
-            later += g.valid() && v.pos[g.idx()] > p;
+        for (const HalfedgeId h : sides(v.at(p))) {
+            const FaceId g = v.mesh.neighbor(h);
+            later += g.valid() && v.pos[g] > p;
         }
         if (later != 2) return false;
         std::vector<Candidate> cand = candidates_for(v, search, p);
@@ -374,7 +379,7 @@ std::vector<Candidate> choose_independent(const StripView& view, FaceSearch& sea
     const HomologyClassifier classifier(view.mesh);
     const size_t dim = classifier.dimension();
     Z2Basis basis(dim);
-    auto keep = [&](const std::vector<uint32_t>& faces) { return basis.insert(classifier.classify(faces)); };
+    auto keep = [&](const std::vector<FaceId>& faces) { return basis.insert(classifier.classify(faces)); };
     std::vector<Candidate> chosen(fundamental.size());
     std::vector<size_t> pending;
     size_t rank = 0;
@@ -424,7 +429,7 @@ std::vector<Candidate> choose_independent(const StripView& view, FaceSearch& sea
 Cycles compute_fundamental_cycles(const StripResult& result) {
     const Mesh& mesh = result.mesh;
     const uint32_t nf = mesh.num_faces();
-    const std::vector<uint32_t> pos = positions_of(result.order, nf);
+    const IdVector<FaceId, uint32_t> pos = positions_of(result.order, nf);
     // The growth builder records its fundamental triangles and when each face was taken; any
     // other strip order gets them by replay, and its positions serve as take times: the faces
     // after a fundamental triangle are then exactly the region it was removed from.
@@ -432,7 +437,7 @@ Cycles compute_fundamental_cycles(const StripResult& result) {
     const std::vector<uint32_t> fundamental = recorded ? result.fundamental_positions : replay_fundamental_positions(mesh, result.order);
     for (const uint32_t p : fundamental)
         if (p >= nf) throw InternalError("fundamental cycles: fundamental position out of range");
-    const StripView view{mesh, result.order, pos, recorded ? result.take_time : pos};
+    const StripView view{mesh, result.order, pos, recorded ? IdSpan<FaceId, uint32_t>(result.take_time) : pos};
 
     // A replayed strip usually needs no homology classes at all (choose_nested()); otherwise
     // each candidate's class is computed and checked against those kept.
@@ -454,7 +459,7 @@ Cycles compute_fundamental_cycles(const StripResult& result) {
         if (c.faces.empty()) continue;  // a slot no independent cycle could fill
         std::vector<uint32_t> cycle;
         cycle.reserve(c.faces.size());
-        for (uint32_t f : c.faces) cycle.push_back(pos[f]);
+        for (const FaceId f : c.faces) cycle.push_back(pos[f]);
         out.lengths.push_back(length_of(faces, cycle));
         out.cycles.push_back(std::move(cycle));
         out.sources.push_back(c.source);

@@ -6,6 +6,8 @@
 #include <tuple>
 #include <utility>
 
+#include "core/face_sides.hpp"
+#include "core/id_vector.hpp"
 #include "singlestrip/errors.hpp"
 
 namespace singlestrip {
@@ -14,27 +16,29 @@ namespace {
 
 /// Tree T (primal, boundary identified) and cotree C (dual) of a mesh; see the header.
 struct Decomposition {
-    std::vector<uint32_t> q;                  ///< vertex -> quotient vertex (boundary -> nv)
-    std::vector<uint32_t> edge_he;            ///< interior edge -> representative half-edge
-    std::vector<uint32_t> edge_of_he;         ///< half-edge -> interior edge (kNone on boundary)
-    std::vector<uint8_t> in_tree, in_cotree;  ///< per interior edge
-    std::vector<uint32_t> tree_order;         ///< quotient vertices in BFS order, root first
-    std::vector<uint32_t> tree_parent_edge;   ///< per quotient vertex (kNone at the root)
-    std::vector<uint32_t> fparent, depth;     ///< cotree parent face and depth per face
+    // Quotient vertices are VertexIds: the mesh's, and one more (nv) for the whole boundary.
+    IdVector<VertexId, VertexId> q;                 ///< vertex -> quotient vertex (boundary -> nv)
+    std::vector<HalfedgeId> edge_he;                ///< interior edge -> representative half-edge
+    IdVector<HalfedgeId, uint32_t> edge_of_he;      ///< half-edge -> interior edge (kNone on boundary)
+    std::vector<uint8_t> in_tree, in_cotree;        ///< per interior edge
+    std::vector<VertexId> tree_order;               ///< quotient vertices in BFS order, root first
+    IdVector<VertexId, uint32_t> tree_parent_edge;  ///< per quotient vertex (kNone at the root)
+    IdVector<FaceId, FaceId> fparent;               ///< cotree parent face (kNone at face 0)
+    IdVector<FaceId, uint32_t> depth;               ///< cotree depth per face
 };
 
 /// Quotient vertices: every boundary vertex becomes the extra vertex nv. False if there is no
 /// boundary.
 bool identify_boundary(const Mesh& mesh, Decomposition& d) {
-    const uint32_t super = mesh.num_vertices();
+    const VertexId super(mesh.num_vertices());
     d.q.resize(mesh.num_vertices());
-    for (uint32_t v = 0; v < d.q.size(); ++v) d.q[v] = v;
+    for (const VertexId v : mesh.vertices()) d.q[v] = v;
     bool has_boundary = false;
     for (const HalfedgeId h : mesh.halfedges()) {
         if (!mesh.is_boundary(h)) continue;
         has_boundary = true;
-        d.q[mesh.from(h).idx()] = super;
-        d.q[mesh.to(h).idx()] = super;
+        d.q[mesh.from(h)] = super;
+        d.q[mesh.to(h)] = super;
     }
     return has_boundary;
 }
@@ -42,31 +46,31 @@ bool identify_boundary(const Mesh& mesh, Decomposition& d) {
 /// Interior edges, one representative half-edge each (h < twin(h)), and the map back.
 void number_interior_edges(const Mesh& mesh, Decomposition& d) {
     for (const HalfedgeId h : mesh.halfedges())
-        if (!mesh.is_boundary(h) && h < mesh.twin(h)) d.edge_he.push_back(h.idx());
+        if (!mesh.is_boundary(h) && h < mesh.twin(h)) d.edge_he.push_back(h);
     d.edge_of_he.assign(mesh.num_halfedges(), kNone);
     for (uint32_t e = 0; e < d.edge_he.size(); ++e) {
         d.edge_of_he[d.edge_he[e]] = e;
-        d.edge_of_he[mesh.twin(HalfedgeId(d.edge_he[e])).idx()] = e;
+        d.edge_of_he[mesh.twin(d.edge_he[e])] = e;
     }
 }
 
 /// Quotient endpoints of interior edge e.
-std::pair<uint32_t, uint32_t> quotient_ends(const Mesh& mesh, const Decomposition& d, uint32_t e) {
-    const HalfedgeId h(d.edge_he[e]);
-    return {d.q[mesh.from(h).idx()], d.q[mesh.to(h).idx()]};
+std::pair<VertexId, VertexId> quotient_ends(const Mesh& mesh, const Decomposition& d, uint32_t e) {
+    const HalfedgeId h = d.edge_he[e];
+    return {d.q[mesh.from(h)], d.q[mesh.to(h)]};
 }
 
 /// T: breadth-first spanning tree of the quotient graph from `root`. Its adjacency is built as
 /// CSR; loops (both ends on the boundary) are left out of the tree and so end up dual edges.
-void build_tree(const Mesh& mesh, Decomposition& d, uint32_t root) {
+void build_tree(const Mesh& mesh, Decomposition& d, VertexId root) {
     const uint32_t nv = mesh.num_vertices();
     const auto ne = static_cast<uint32_t>(d.edge_he.size());
     std::vector<uint32_t> start(nv + 2, 0);
     for (uint32_t e = 0; e < ne; ++e) {
         const auto [a, b] = quotient_ends(mesh, d, e);
         if (a == b) continue;
-        ++start[a + 1];
-        ++start[b + 1];
+        ++start[a.idx() + 1];
+        ++start[b.idx() + 1];
     }
     for (uint32_t v = 0; v <= nv; ++v) start[v + 1] += start[v];
     std::vector<uint32_t> adj(start[nv + 1]);
@@ -75,22 +79,22 @@ void build_tree(const Mesh& mesh, Decomposition& d, uint32_t root) {
         for (uint32_t e = 0; e < ne; ++e) {
             const auto [a, b] = quotient_ends(mesh, d, e);
             if (a == b) continue;
-            adj[fill[a]++] = e;
-            adj[fill[b]++] = e;
+            adj[fill[a.idx()]++] = e;
+            adj[fill[b.idx()]++] = e;
         }
     }
     d.in_tree.assign(ne, 0);
     d.tree_parent_edge.assign(nv + 1, kNone);
-    std::vector<uint8_t> seen(nv + 1, 0);
-    std::vector<uint32_t>& queue = d.tree_order;
+    IdVector<VertexId, uint8_t> seen(nv + 1, 0);
+    std::vector<VertexId>& queue = d.tree_order;
     queue.assign(1, root);
     seen[root] = 1;
     for (size_t head = 0; head < queue.size(); ++head) {
-        const uint32_t v = queue[head];
-        for (uint32_t i = start[v]; i < start[v + 1]; ++i) {
+        const VertexId v = queue[head];
+        for (uint32_t i = start[v.idx()]; i < start[v.idx() + 1]; ++i) {
             const uint32_t e = adj[i];
             const auto [a, b] = quotient_ends(mesh, d, e);
-            const uint32_t w = a == v ? b : a;
+            const VertexId w = a == v ? b : a;
             if (seen[w]) continue;
             seen[w] = 1;
             d.in_tree[e] = 1;
@@ -106,21 +110,20 @@ void build_cotree(const Mesh& mesh, Decomposition& d) {
     d.fparent.assign(nf, kNone);
     d.depth.assign(nf, 0);
     d.in_cotree.assign(d.edge_he.size(), 0);
-    std::vector<uint8_t> reached(nf, 0);
+    IdVector<FaceId, uint8_t> reached(nf, 0);
     std::vector<FaceId> fqueue{FaceId(0)};
-    reached[0] = 1;
+    reached[FaceId(0)] = 1;
     for (size_t head = 0; head < fqueue.size(); ++head) {
         const FaceId f = fqueue[head];
-        for (uint32_t k = 0; k < 3; ++k) {
-            const HalfedgeId h = Mesh::halfedge(f, k);
+        for (const HalfedgeId h : sides(f)) {
             const FaceId g = mesh.neighbor(h);
             if (!g.valid()) continue;
-            const uint32_t e = d.edge_of_he[h.idx()];
-            if (d.in_tree[e] || reached[g.idx()]) continue;
-            reached[g.idx()] = 1;
+            const uint32_t e = d.edge_of_he[h];
+            if (d.in_tree[e] || reached[g]) continue;
+            reached[g] = 1;
             d.in_cotree[e] = 1;
-            d.fparent[g.idx()] = f.idx();
-            d.depth[g.idx()] = d.depth[f.idx()] + 1;
+            d.fparent[g] = f;
+            d.depth[g] = d.depth[f] + 1;
             fqueue.push_back(g);
         }
     }
@@ -136,10 +139,10 @@ Decomposition decompose(const Mesh& mesh) {
     const bool has_boundary = identify_boundary(mesh, d);
     number_interior_edges(mesh, d);
     // Rooted at the boundary vertex, else at the lowest referenced vertex.
-    uint32_t root = mesh.num_vertices();
+    VertexId root(mesh.num_vertices());
     if (!has_boundary) {
-        root = mesh.from(HalfedgeId(0)).idx();
-        for (const HalfedgeId h : mesh.halfedges()) root = std::min(root, mesh.from(h).idx());
+        root = mesh.from(HalfedgeId(0));
+        for (const HalfedgeId h : mesh.halfedges()) root = std::min(root, mesh.from(h));
     }
     build_tree(mesh, d, root);
     build_cotree(mesh, d);
@@ -148,8 +151,8 @@ Decomposition decompose(const Mesh& mesh) {
 
 /// The faces f .. lca .. g of the cotree path between f and g, then back to f across the edge
 /// that joins g and f: a closed chain.
-std::vector<uint32_t> cotree_cycle(const std::vector<uint32_t>& fparent, const std::vector<uint32_t>& depth, uint32_t f, uint32_t g) {
-    std::vector<uint32_t> up, down;  // f .. lca, g .. (child of lca)
+std::vector<FaceId> cotree_cycle(IdSpan<FaceId, FaceId> fparent, IdSpan<FaceId, uint32_t> depth, FaceId f, FaceId g) {
+    std::vector<FaceId> up, down;  // f .. lca, g .. (child of lca)
     while (depth[f] > depth[g]) {
         up.push_back(f);
         f = fparent[f];
@@ -170,7 +173,7 @@ std::vector<uint32_t> cotree_cycle(const std::vector<uint32_t>& fparent, const s
 }
 
 /// Number of faces of cotree_cycle(f, g).
-size_t cotree_cycle_length(const std::vector<uint32_t>& fparent, const std::vector<uint32_t>& depth, uint32_t f, uint32_t g) {
+size_t cotree_cycle_length(IdSpan<FaceId, FaceId> fparent, IdSpan<FaceId, uint32_t> depth, FaceId f, FaceId g) {
     size_t n = 1;
     for (; depth[f] > depth[g]; ++n) f = fparent[f];
     for (; depth[g] > depth[f]; ++n) g = fparent[g];
@@ -186,21 +189,19 @@ size_t cotree_cycle_length(const std::vector<uint32_t>& fparent, const std::vect
 std::vector<std::vector<uint32_t>> tree_cotree_generators(const Mesh& mesh, const std::vector<uint32_t>& order) {
     const uint32_t nf = mesh.num_faces();
     // Face -> position in `order`.
-    std::vector<uint32_t> pos(nf);
+    IdVector<FaceId, uint32_t> pos(nf, kNone);
     if (order.empty()) {
-        for (uint32_t f = 0; f < nf; ++f) pos[f] = f;
+        for (const FaceId f : mesh.faces()) pos[f] = f.idx();
     } else {
         if (order.size() != nf) throw RequestError("tree-cotree: face order does not have one entry per face");
-        std::fill(pos.begin(), pos.end(), kNone);
         for (uint32_t i = 0; i < nf; ++i) {
-            if (order[i] >= nf || pos[order[i]] != kNone) throw RequestError("tree-cotree: face order is not a permutation of the faces");
-            pos[order[i]] = i;
+            const FaceId f(order[i]);
+            if (f.idx() >= nf || pos[f] != kNone) throw RequestError("tree-cotree: face order is not a permutation of the faces");
+            pos[f] = i;
         }
     }
     const Decomposition d = decompose(mesh);
     const uint32_t ne = static_cast<uint32_t>(d.edge_he.size());
-    const auto& fparent = d.fparent;
-    const auto& depth = d.depth;
     const auto& edge_he = d.edge_he;
     const auto& in_tree = d.in_tree;
     const auto& in_cotree = d.in_cotree;
@@ -209,10 +210,12 @@ std::vector<std::vector<uint32_t>> tree_cotree_generators(const Mesh& mesh, cons
     std::vector<std::vector<uint32_t>> gens;
     for (uint32_t e = 0; e < ne; ++e) {
         if (in_tree[e] || in_cotree[e]) continue;
-        const HalfedgeId h(edge_he[e]);
-        std::vector<uint32_t> cycle = cotree_cycle(fparent, depth, Mesh::face(h).idx(), Mesh::face(mesh.twin(h)).idx());
-        for (uint32_t& x : cycle) x = pos[x];
-        gens.push_back(std::move(cycle));
+        const HalfedgeId h = edge_he[e];
+        const std::vector<FaceId> cycle = cotree_cycle(d.fparent, d.depth, Mesh::face(h), Mesh::face(mesh.twin(h)));
+        std::vector<uint32_t> positions;
+        positions.reserve(cycle.size());
+        for (const FaceId f : cycle) positions.push_back(pos[f]);
+        gens.push_back(std::move(positions));
     }
     return gens;
 }
@@ -226,19 +229,19 @@ namespace {
 /// Preorder number and subtree size of every tree vertex: the subtree below a vertex is the
 /// preorder interval [pre, pre + size). Parents come before children in d.tree_order (BFS), so
 /// each child takes the next free slot of its parent. Vertices outside the tree keep kNone.
-void preorder_intervals(const Mesh& mesh, const Decomposition& d, std::vector<uint32_t>& pre, std::vector<uint32_t>& size) {
+void preorder_intervals(const Mesh& mesh, const Decomposition& d, IdVector<VertexId, uint32_t>& pre, IdVector<VertexId, uint32_t>& size) {
     const size_t nq = d.tree_parent_edge.size();
     pre.assign(nq, kNone);
     size.assign(nq, 1);
     if (d.tree_order.empty()) return;
-    auto parent_of = [&](uint32_t v) {
+    auto parent_of = [&](VertexId v) {
         const auto [a, b] = quotient_ends(mesh, d, d.tree_parent_edge[v]);
         return a == v ? b : a;
     };
     for (auto it = d.tree_order.rbegin(); it != d.tree_order.rend(); ++it)
         if (d.tree_parent_edge[*it] != kNone) size[parent_of(*it)] += size[*it];
-    std::vector<uint32_t> next_free(nq, 0);
-    for (const uint32_t v : d.tree_order) {
+    IdVector<VertexId, uint32_t> next_free(nq, 0);
+    for (const VertexId v : d.tree_order) {
         pre[v] = d.tree_parent_edge[v] == kNone ? 0 : next_free[parent_of(v)];
         if (d.tree_parent_edge[v] != kNone) next_free[parent_of(v)] += size[v];
         next_free[v] = pre[v] + 1;
@@ -256,7 +259,7 @@ HomologyClassifier::HomologyClassifier(const Mesh& mesh) : mesh_(&mesh) {
             bit_of_edge_[e] = static_cast<uint32_t>(leftover_.size());
             leftover_.push_back(e);
         }
-    std::vector<uint32_t> pre, size;
+    IdVector<VertexId, uint32_t> pre, size;
     preorder_intervals(mesh, d, pre, size);
     // Both endpoints of every leftover edge, sorted by the preorder number of their vertex.
     std::vector<std::pair<uint32_t, uint32_t>> ends;  // (preorder, class bit)
@@ -273,41 +276,43 @@ HomologyClassifier::HomologyClassifier(const Mesh& mesh) : mesh_(&mesh) {
     // Per tree edge: the endpoints in the subtree below it (its child's preorder interval).
     under_first_.assign(ne, 0);
     under_last_.assign(ne, 0);
-    for (const uint32_t c : d.tree_order) {
+    for (const VertexId c : d.tree_order) {
         const uint32_t e = d.tree_parent_edge[c];
         if (e == kNone) continue;
         under_first_[e] = static_cast<uint32_t>(std::lower_bound(end_pre.begin(), end_pre.end(), pre[c]) - end_pre.begin());
         under_last_[e] = static_cast<uint32_t>(std::lower_bound(end_pre.begin(), end_pre.end(), pre[c] + size[c]) - end_pre.begin());
     }
-    edge_of_he_ = std::move(d.edge_of_he);
+    edge_of_he_ = std::move(d.edge_of_he).release();
     for (const uint32_t e : leftover_) leftover_he_.push_back(d.edge_he[e]);
-    fparent_ = std::move(d.fparent);
-    depth_ = std::move(d.depth);
+    fparent_ = std::move(d.fparent).release();
+    depth_ = std::move(d.depth).release();
 }
 
-std::vector<uint32_t> HomologyClassifier::generator(size_t j) const {
-    const HalfedgeId h(leftover_he_.at(j));
-    return cotree_cycle(fparent_, depth_, Mesh::face(h).idx(), Mesh::face(mesh_->twin(h)).idx());
+std::vector<FaceId> HomologyClassifier::generator(size_t j) const {
+    const HalfedgeId h = leftover_he_.at(j);
+    return cotree_cycle(IdSpan<FaceId, FaceId>(fparent_), IdSpan<FaceId, uint32_t>(depth_), Mesh::face(h), Mesh::face(mesh_->twin(h)));
 }
 
 size_t HomologyClassifier::generator_length(size_t j) const {
-    const HalfedgeId h(leftover_he_.at(j));
-    return cotree_cycle_length(fparent_, depth_, Mesh::face(h).idx(), Mesh::face(mesh_->twin(h)).idx());
+    const HalfedgeId h = leftover_he_.at(j);
+    return cotree_cycle_length(IdSpan<FaceId, FaceId>(fparent_), IdSpan<FaceId, uint32_t>(depth_), Mesh::face(h),
+                               Mesh::face(mesh_->twin(h)));
 }
 
 // Bit j = crossings of leftover edge j + crossings of the tree paths from its two endpoints to
 // the root. A crossed tree edge lies on the root path of exactly the vertices below it, so it
 // flips the endpoints in one preorder interval; parity is odd between the 1st and 2nd, 3rd and
 // 4th, ... interval ends in sorted order.
-std::vector<uint64_t> HomologyClassifier::classify(const std::vector<uint32_t>& faces) const {
+std::vector<uint64_t> HomologyClassifier::classify(const std::vector<FaceId>& faces) const {
     const Mesh& mesh = *mesh_;
+    const IdSpan<HalfedgeId, uint32_t> edge_of_he(edge_of_he_);
     std::vector<uint64_t> bits((leftover_.size() + 63) / 64, 0);
     if (faces.size() < 2) return bits;
     std::vector<uint32_t> crossed(faces.size());
     for (size_t i = 0; i < faces.size(); ++i) {
-        const HalfedgeId h = mesh.shared_halfedge(FaceId(faces[i]), FaceId(faces[(i + 1) % faces.size()]));
-        if (h == kNone) throw InternalError("homology class: consecutive faces of a chain are not adjacent");
-        crossed[i] = edge_of_he_[h.idx()];
+        const HalfedgeId h = mesh.shared_halfedge(faces[i], faces[(i + 1) % faces.size()]);
+        if (!h.valid()) throw InternalError("homology class: consecutive faces of a chain are not adjacent");
+        crossed[i] = edge_of_he[h];
     }
     std::sort(crossed.begin(), crossed.end());
     auto flip = [&](uint32_t bit) { bits[bit / 64] ^= uint64_t{1} << (bit % 64); };

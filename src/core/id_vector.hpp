@@ -43,4 +43,19 @@ private:
     std::vector<T> v_;
 };
 
+/// A read-only view of a per-id array indexed by I: an IdVector, or a plain std::vector that a
+/// public struct keeps (StripResult::take_time, a public class's members), without a copy.
+template <class I, class T>
+class IdSpan {
+public:
+    explicit IdSpan(const std::vector<T>& v) noexcept : p_(v.data()), n_(v.size()) {}
+    IdSpan(const IdVector<I, T>& v) noexcept : IdSpan(v.plain()) {}  // NOLINT(google-explicit-constructor)
+    [[nodiscard]] const T& operator[](I i) const noexcept { return p_[i.idx()]; }
+    [[nodiscard]] size_t size() const noexcept { return n_; }
+
+private:
+    const T* p_;
+    size_t n_;
+};
+
 }  // namespace singlestrip
