@@ -3,6 +3,7 @@
 // reference and swap floor, and random constraint polylines on both engines.
 // <out>/awkward.dat (gnuplot). Progress goes to stderr only when it is a terminal.
 #include <fcntl.h>
+#include <malloc.h>
 #include <poll.h>
 #include <signal.h>
 #include <sys/resource.h>
@@ -40,6 +41,7 @@
 #include "singlestrip/errors.hpp"
 #include "singlestrip/io.hpp"
 #include "singlestrip/mesh.hpp"
+#include "singlestrip/pipeline.hpp"
 #include "singlestrip/strip.hpp"
 #include "singlestrip/validate.hpp"
 #include "singlestrip/verify.hpp"
@@ -159,6 +161,28 @@ void write_generated(const Spec& spec) {
     }
 }
 
+/// Peak memory (KB) as the CLI has it: read, stripify() with the soup given up, write, with the
+/// CLI's mmap threshold, first thing in this child. The stage-by-stage repetitions below hold
+/// the soup beside the mesh and a copy of the points, which the tool never does. 0 on failure.
+uint64_t tool_peak_kb(const std::string& path, const ss::StripOptions& strip) {
+    mallopt(M_MMAP_THRESHOLD, 1 << 20);
+    try {
+        ss::PipelineOptions o;
+        o.strip = strip;
+        o.orient = true;
+        o.release_intermediates = true;
+        o.name = path;
+        const ss::PipelineResult pr = ss::stripify(ss::read_mesh_file(path), o);
+        ss::write_strip_mesh(path + ".peak.ply", pr.arrays.points, pr.arrays.faces, pr.arrays.parent);
+    } catch (const std::exception&) {
+        return 0;
+    }
+    std::remove((path + ".peak.ply").c_str());
+    rusage ru{};
+    getrusage(RUSAGE_SELF, &ru);
+    return static_cast<uint64_t>(ru.ru_maxrss);
+}
+
 EngineRun measure_engine(const Spec& spec, ss::StripEngine engine, const std::string& out_path, const Settings& cfg) {
     EngineRun r;
     std::vector<double> tr, tc, ta, tb, te, tw, tt;
@@ -166,6 +190,8 @@ EngineRun measure_engine(const Spec& spec, ss::StripEngine engine, const std::st
     std::vector<uint32_t> last_indices;
     ss::StripOptions options;
     options.engine = engine;
+    if (!spec.walls_path.empty()) options.constraint_edges = ss::as_constraints(read_walls(spec.walls_path));
+    r.peak_kb = tool_peak_kb(spec.path, options);
     const auto start = Clock::now();
     try {
         for (int rep = 0; rep < spec.reps; ++rep) {
@@ -178,8 +204,6 @@ EngineRun measure_engine(const Spec& spec, ss::StripEngine engine, const std::st
                 set_message(r, e.what());
                 return r;
             }
-            // Walls are read with the mesh, as `strip --constraints` would.
-            if (!spec.walls_path.empty()) options.constraint_edges = ss::as_constraints(read_walls(spec.walls_path));
             tr.push_back(seconds_since(t));
             t = Clock::now();
             // As stripify() does: a large shuffled soup is checked and stripped in a Z-order.
@@ -236,11 +260,6 @@ EngineRun measure_engine(const Spec& spec, ss::StripEngine engine, const std::st
             ss::write_strip_mesh(out_path, arr.points, arr.faces, arr.parent);
             tw.push_back(seconds_since(t));
             tt.push_back(tr.back() + tc.back() + ta.back() + tb.back() + te.back() + tw.back());
-            if (rep == 0) {
-                rusage ru{};
-                getrusage(RUSAGE_SELF, &ru);
-                r.peak_kb = static_cast<uint64_t>(ru.ru_maxrss);
-            }
             last = std::move(arr);
             last_indices = std::move(indices);
             ++r.reps;
