@@ -149,6 +149,27 @@ EdgeList read_walls(const std::string& path) {
     return e;
 }
 
+/// As stripify() does when prepare_soup_components() renumbered the vertices (`origin`, the
+/// given vertex of each): constraint pairs go in in that numbering ...
+ss::StripOptions in_numbering(const ss::StripOptions& given, const std::vector<uint32_t>& origin) {
+    if (origin.empty() || given.constraint_edges.empty()) return given;
+    std::vector<uint32_t> internal(origin.size());
+    for (uint32_t i = 0; i < origin.size(); ++i) internal[origin[i]] = i;
+    ss::StripOptions o = given;
+    for (ss::ConstraintEdge& e : o.constraint_edges) e = ss::ConstraintEdge{internal[e.a], internal[e.b], e.line};
+    return o;
+}
+
+/// ... and the output comes back in the given one.
+void to_given_vertices(ss::StripArrays& arr, const std::vector<uint32_t>& origin) {
+    const size_t nv = origin.size();
+    if (nv == 0) return;
+    const std::vector<ss::Point3> first(arr.points.begin(), arr.points.begin() + static_cast<std::ptrdiff_t>(nv));
+    for (size_t i = 0; i < nv; ++i) arr.points[origin[i]] = first[i];
+    for (ss::Triangle& t : arr.faces)
+        for (uint32_t& v : t) v = v < nv ? origin[v] : v;
+}
+
 }  // namespace
 
 void write_generated(const Spec& spec) {
@@ -216,11 +237,12 @@ EngineRun measure_engine(const Spec& spec, ss::StripEngine engine, const std::st
             tr.push_back(seconds_since(t));
             t = Clock::now();
             // As stripify() does: a large shuffled soup is checked and stripped in a Z-order.
-            std::vector<uint32_t> origin;
+            std::vector<uint32_t> origin, vertex_origin;
             try {
-                ss::PreparedSoup prepared = ss::prepare_soup_components(std::move(soup), ss::PrepareOptions{true, true}, spec.path);
+                ss::PreparedSoup prepared = ss::prepare_soup_components(std::move(soup), ss::PrepareOptions{true, true, true}, spec.path);
                 soup = std::move(prepared.soup);
                 origin = std::move(prepared.face_origin);
+                vertex_origin = std::move(prepared.vertex_origin);
             } catch (const ss::InputError& e) {
                 r.status = 1;
                 set_message(r, e.what());
@@ -240,12 +262,13 @@ EngineRun measure_engine(const Spec& spec, ss::StripEngine engine, const std::st
             // The mesh holds its own copy of everything: drop the soup, as a memory-aware caller would.
             soup = ss::TriangleSoup{};
             t = Clock::now();
-            ss::StripResult res = ss::build_strip(std::move(mesh), options);
+            ss::StripResult res = ss::build_strip(std::move(mesh), in_numbering(options, vertex_origin));
             tb.push_back(seconds_since(t));
             t = Clock::now();
             ss::StripArrays arr = ss::strip_arrays(res);
             for (uint32_t& p : arr.parent)
                 if (!origin.empty()) p = origin[p];
+            to_given_vertices(arr, vertex_origin);
             std::vector<uint32_t> indices = ss::encode_triangle_strip(arr.faces);
             te.push_back(seconds_since(t));
             if (rep == 0) {

@@ -1,5 +1,6 @@
-// Faces of large shuffled soups are stripped in a Z-order of their centroids (face_order.hpp,
-// stripify()); the outputs still verify against the caller's soup and parents name its faces.
+// Faces of large shuffled soups are stripped in a Z-order of their centroids, and scattered
+// vertex numbers renumbered by first use (face_order.hpp, stripify()); the outputs still verify
+// against the caller's soup, and parents and vertices are the caller's.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -88,7 +89,7 @@ TriangleSoup shuffled_with_flips() {
 
 std::string refusal(const TriangleSoup& s, bool locality) {
     try {
-        prepare_soup_components(s, PrepareOptions{false, locality}, "t.off");
+        prepare_soup_components(s, PrepareOptions{false, locality, locality}, "t.off");
     } catch (const InputError& e) {
         return e.what();
     }
@@ -125,7 +126,165 @@ TEST(FaceOrder, OrientationTieKeepsTheGivenLowestFace) {
         ASSERT_EQ(local.soup.triangles[i], given.soup.triangles[local.face_origin[i]]) << i;
 }
 
+/// A large torus whose vertices and faces are both shuffled; `new_of_old` maps the torus's
+/// vertex numbers to the soup's.
+TriangleSoup shuffled_both(std::vector<uint32_t>* new_of_old = nullptr) {
+    TriangleSoup s = make_torus(363, 363);
+    std::vector<uint32_t> map = shuffle_vertices(s, 13);
+    shuffle_faces(s, 17);
+    if (new_of_old) *new_of_old = std::move(map);
+    return s;
+}
+
+TEST(VertexOrder, ShuffledVerticesAreNumberedByFirstUse) {
+    const TriangleSoup s = shuffled_both();
+    const PreparedSoup given = prepare_soup_components(s, PrepareOptions{false, false, false}, "t.off");
+    const PreparedSoup local = prepare_soup_components(s, PrepareOptions{false, true, true}, "t.off");
+    ASSERT_EQ(local.vertex_origin.size(), s.points.size());
+    std::vector<uint32_t> sorted = local.vertex_origin;
+    std::sort(sorted.begin(), sorted.end());
+    for (uint32_t v = 0; v < sorted.size(); ++v) ASSERT_EQ(sorted[v], v);
+    for (size_t i = 0; i < local.soup.triangles.size(); ++i)
+        for (int k = 0; k < 3; ++k)
+            ASSERT_EQ(local.vertex_origin[local.soup.triangles[i][k]], given.soup.triangles[local.face_origin[i]][k]) << i;
+    for (uint32_t v = 0; v < s.points.size(); ++v) ASSERT_EQ(local.soup.points[v], s.points[local.vertex_origin[v]]);
+    // First use: the first face's corners are vertices 0, 1, 2.
+    EXPECT_EQ(local.soup.triangles[0], (Triangle{0, 1, 2}));
+    EXPECT_TRUE(prepare_soup_components(s, PrepareOptions{false, true, false}, "t.off").vertex_origin.empty());
+}
+
+TEST(VertexOrder, OnlyScatteredNumbersAreRenumbered) {
+    TriangleSoup s = make_torus(363, 363);
+    shuffle_faces(s, 3);  // rows of vertices stay local along the Z-order
+    const PreparedSoup local = prepare_soup_components(s, PrepareOptions{false, true, true}, "t.off");
+    EXPECT_FALSE(local.face_origin.empty());
+    EXPECT_TRUE(local.vertex_origin.empty());
+}
+
+TEST(VertexOrder, PermuteVerticesAndBackRestoresTheSoup) {
+    TriangleSoup s = make_torus(20, 12);
+    VertexAttribute uv;
+    uv.name = "TEXCOORD_0";
+    uv.components = 2;
+    for (size_t v = 0; v < s.points.size(); ++v) uv.values.insert(uv.values.end(), {double(v), -double(v)});
+    s.attributes.push_back(uv);
+    const TriangleSoup given = s;
+    std::vector<uint32_t> origin(s.points.size());
+    std::iota(origin.begin(), origin.end(), 0u);
+    std::reverse(origin.begin(), origin.end());
+    permute_vertices(s, origin, false);
+    EXPECT_EQ(s.points[0], given.points.back());
+    EXPECT_EQ(s.attributes[0].values[0], double(given.points.size() - 1));
+    EXPECT_EQ(s.triangles[0][0], origin.size() - 1 - given.triangles[0][0]);
+    permute_vertices(s, origin, true);
+    EXPECT_EQ(s.points, given.points);
+    EXPECT_EQ(s.triangles, given.triangles);
+    EXPECT_EQ(s.attributes[0].values, given.attributes[0].values);
+}
+
+TEST(VertexOrder, RefusalNamesTheGivenVertices) {
+    TriangleSoup s = shuffled_both();
+    std::swap(s.triangles[17][1], s.triangles[17][2]);
+    const std::string plain = refusal(s, false);
+    EXPECT_NE(plain, "accepted");
+    try {
+        prepare_soup_components(s, PrepareOptions{false, true, true}, "t.off");
+        ADD_FAILURE() << "accepted";
+    } catch (const InputError& e) {
+        EXPECT_EQ(e.what(), plain);
+    }
+}
+
+TEST(VertexOrder, MeshRenumberingKeepsTheInvariants) {
+    Mesh m = Mesh::from_soup(make_torus(12, 8));
+    m.split_edge(HalfedgeId(4));  // a midpoint keeps its number
+    const auto n = m.num_input_vertices();
+    std::vector<uint32_t> to(n);
+    for (uint32_t v = 0; v < n; ++v) to[v] = (v * 7 + 3) % n;  // 7 is prime to 96
+    const std::vector<uint32_t> before = m.corner_vertices();
+    const std::vector<Point3> points = m.points();
+    m.renumber_input_vertices(to);
+    m.validate();
+    for (size_t c = 0; c < before.size(); ++c) ASSERT_EQ(m.corner_vertices()[c], before[c] < n ? to[before[c]] : before[c]);
+    for (uint32_t v = 0; v < n; ++v) ASSERT_EQ(m.points()[to[v]], points[v]);
+    EXPECT_EQ(m.points().back(), points.back());
+    to[0] = to[1];
+    EXPECT_THROW(m.renumber_input_vertices(to), InternalError);
+    to.pop_back();
+    EXPECT_THROW(m.renumber_input_vertices(to), InternalError);
+}
+
 class ShuffledLarge : public EngineTest {};
+
+/// Constraint pairs of `s`: one edge of every 20000th face (single edges never separate).
+std::vector<ConstraintEdge> scattered_walls(const TriangleSoup& s) {
+    std::vector<ConstraintEdge> walls;
+    for (size_t f = 0; f < s.triangles.size(); f += 20000) walls.push_back({s.triangles[f][0], s.triangles[f][1], 0});
+    return walls;
+}
+
+TEST_P(ShuffledLarge, ShuffledVerticesComeBackInTheGivenNumbers) {
+    const TriangleSoup s0 = shuffled_both();
+    TriangleSoup s = s0;
+    VertexAttribute id;
+    id.name = "_ID";
+    for (size_t v = 0; v < s.points.size(); ++v) id.values.push_back(static_cast<double>(v));
+    s.attributes.push_back(id);
+    PipelineOptions o;
+    o.strip = opts();
+    o.strip.constraint_edges = scattered_walls(s);
+    o.self_check = true;
+    o.release_intermediates = false;
+    ASSERT_FALSE(prepare_soup_components(s, PrepareOptions{false, true, true}, "t.off").vertex_origin.empty()) << "not renumbered";
+    const PipelineResult r = stripify(s, o);
+    EXPECT_EQ(r.options.strip.constraint_edges, o.strip.constraint_edges);
+    EXPECT_EQ(r.input.points, s.points);
+    for (size_t v = 0; v < s.points.size(); ++v) {
+        ASSERT_EQ(r.arrays.points[v], s.points[v]);
+        ASSERT_EQ(r.arrays.attributes.at(0).values.at(v), static_cast<double>(v));
+    }
+    r.strip.mesh.validate();
+    EXPECT_TRUE(std::equal(s.points.begin(), s.points.end(), r.strip.mesh.points().begin()));
+    EXPECT_TRUE(parents_hold_their_faces(s, r.arrays));
+    VerifyInput vi = verify_input(s0, r.arrays, r.indices);
+    for (const ConstraintEdge& e : o.strip.constraint_edges) vi.constraints.emplace_back(e.a, e.b);
+    const VerifyReport rep = verify(vi);
+    EXPECT_TRUE(rep.ok()) << rep.to_string();
+}
+
+TEST_P(ShuffledLarge, ShuffledVerticesWithSourceAndTargetAndRestarts) {
+    TriangleSoup s = shuffled_both();
+    const TriangleSoup b = make_torus(40, 40);  // a second component: restart joins
+    const auto base = static_cast<uint32_t>(s.points.size());
+    for (Point3 p : b.points) s.points.push_back({p[0] + 10, p[1], p[2]});
+    for (Triangle t : b.triangles) s.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+    PipelineOptions o;
+    o.strip = opts();
+    o.join = JoinMode::Restart;
+    for (const bool ends : {false, true}) {
+        if (ends) o.strip.source = VertexId(s.triangles[5][0]), o.strip.target = VertexId(s.triangles[9][2]);
+        const PipelineResult r = stripify(s, o);
+        VerifyInput vi = verify_input(s, r.arrays, r.indices);
+        vi.restart_index = o.restart_index;
+        if (ends) vi.source = s.triangles[5][0], vi.target = s.triangles[9][2];
+        const VerifyReport rep = verify(vi);
+        EXPECT_TRUE(rep.ok()) << rep.to_string();
+    }
+}
+
+TEST(VertexOrder, ConstraintMessageNamesTheGivenVertices) {
+    const TriangleSoup s = shuffled_both();
+    const uint32_t a = s.triangles[0][0], far = s.triangles[s.triangles.size() / 2][0];
+    PipelineOptions o;
+    o.strip.constraint_edges = {{a, far, 0}};
+    try {
+        (void)stripify(s, o);
+        ADD_FAILURE() << "accepted";
+    } catch (const RequestError& e) {
+        EXPECT_EQ(std::string(e.what()),
+                  "constraint 0: (" + std::to_string(a) + ", " + std::to_string(far) + ") is not an edge of the mesh");
+    }
+}
 
 // 2 * 363 * 363 = 263538 faces: above the size from which stripify() reorders.
 TEST_P(ShuffledLarge, ReorderedStripVerifiesWithTheCallersFaces) {

@@ -173,6 +173,13 @@ public:
     /// while the builder's exist (the growth builder's memory peak). O(F) once.
     void reserve_splits(uint32_t splits);
 
+    /// Renumbers the input vertices: vertex v becomes to[v] (midpoints keep their numbers). For a
+    /// caller that built the mesh from a renumbered soup and hands it back in the given numbers.
+    /// All invariants hold afterwards. O(V + F).
+    /// \pre `to` is a permutation of 0 .. num_input_vertices() - 1
+    /// \throw InternalError if `to` has the wrong size or is no permutation.
+    void renumber_input_vertices(const std::vector<uint32_t>& to);
+
     /// Moves the vertex positions out and leaves an empty mesh: for a caller done with the mesh
     /// that needs its points (the output arrays), without a second copy at the peak.
     [[nodiscard]] std::vector<Point3> release_points() &&;

@@ -38,9 +38,12 @@ struct PrepareOptions {
     /// of reporting inconsistent orientation.
     bool orient = false;
     /// prepare_soup_components() only: a large soup whose faces have no order (shuffled) comes
-    /// back in a Z-order of its face centroids, for the cache (PreparedSoup::face_origin). The
-    /// checks, messages and orientation are those of the given order.
+    /// back in a Z-order of its face centroids, for the cache (PreparedSoup::face_origin).
+    /// Messages, orientation and components are those of the given soup.
     bool locality = false;
+    /// With `locality`, when the reordered soup's vertex numbers are scattered too (a file whose
+    /// vertices were shuffled): its vertices numbered by first use (PreparedSoup::vertex_origin).
+    bool vertex_locality = false;
 };
 
 /// Checks (and with opt.orient, re-orients) `soup`; returns it ready for Mesh::from_soup().
@@ -59,6 +62,10 @@ struct PreparedSoup {
     /// With PrepareOptions::locality, when the faces were reordered: the given soup's face of
     /// each face of `soup`. Empty: same order as given.
     std::vector<uint32_t> face_origin;
+    /// With PrepareOptions::vertex_locality, when the vertices were renumbered too (their numbers had
+    /// no locality along the faces): the given soup's vertex of each vertex of `soup`. Empty:
+    /// numbered as given.
+    std::vector<uint32_t> vertex_origin;
 };
 
 /// prepare_soup() that also gives the components from the same analysis, so a caller that

@@ -74,22 +74,70 @@ std::vector<uint32_t> spatial_face_order(const std::vector<Point3>& points, cons
     return order;
 }
 
-std::vector<uint32_t> locality_order(const TriangleSoup& soup) {
-    constexpr size_t kMinFaces = size_t{1} << 18;
-    constexpr uint32_t kFar = 32768;        ///< vertex numbers this far apart: not one sweep
+namespace {
+
+constexpr size_t kMinFaces = size_t{1} << 18;
+
+/// Whether the consecutive faces' lowest vertices jump far in more than a quarter of the steps:
+/// an eighth of the numbers (at most 32768) is far, a sweep's rows are much shorter.
+bool numbers_scattered(const std::vector<Triangle>& t, size_t num_vertices) {
+    const auto far = static_cast<uint32_t>(std::clamp<size_t>(num_vertices / 8, 256, 32768));
     constexpr double kMaxScattered = 0.25;  ///< a sweep's rows jump about once a row
-    const auto& t = soup.triangles;
-    if (t.size() < kMinFaces) return {};
     size_t scattered = 0;
     uint32_t last = 0;
     for (size_t f = 0; f < t.size(); ++f) {
-        if (std::max({t[f][0], t[f][1], t[f][2]}) >= soup.points.size()) return {};
         const uint32_t low = std::min({t[f][0], t[f][1], t[f][2]});
-        scattered += f > 0 && (low > last ? low - last : last - low) >= kFar ? 1 : 0;
+        scattered += f > 0 && (low > last ? low - last : last - low) >= far ? 1 : 0;
         last = low;
     }
-    if (static_cast<double>(scattered) <= kMaxScattered * static_cast<double>(t.size())) return {};
+    return static_cast<double>(scattered) > kMaxScattered * static_cast<double>(t.size());
+}
+
+}  // namespace
+
+std::vector<uint32_t> locality_order(const TriangleSoup& soup) {
+    const auto& t = soup.triangles;
+    if (t.size() < kMinFaces) return {};
+    for (const Triangle& tri : t)
+        if (std::max({tri[0], tri[1], tri[2]}) >= soup.points.size()) return {};
+    if (!numbers_scattered(t, soup.points.size())) return {};
     return spatial_face_order(soup.points, t);
+}
+
+std::vector<uint32_t> locality_vertex_order(const TriangleSoup& soup) {
+    if (soup.triangles.size() < kMinFaces || !numbers_scattered(soup.triangles, soup.points.size())) return {};
+    const size_t nv = soup.points.size();
+    std::vector<char> seen(nv, 0);
+    std::vector<uint32_t> origin;
+    origin.reserve(nv);
+    for (const Triangle& t : soup.triangles)
+        for (const uint32_t v : t)
+            if (!seen[v]) seen[v] = 1, origin.push_back(v);
+    for (uint32_t v = 0; v < nv; ++v)
+        if (!seen[v]) origin.push_back(v);
+    return origin;
+}
+
+void permute_vertices(TriangleSoup& soup, const std::vector<uint32_t>& origin, bool back) {
+    const size_t nv = origin.size();
+    std::vector<uint32_t> to(nv);  // vertex of the current numbering -> of the new one
+    for (uint32_t i = 0; i < nv; ++i) {
+        if (back)
+            to[i] = origin[i];
+        else
+            to[origin[i]] = i;
+    }
+    std::vector<Point3> points(nv);
+    for (uint32_t v = 0; v < nv; ++v) points[to[v]] = soup.points[v];
+    soup.points = std::move(points);
+    for (Triangle& t : soup.triangles)
+        for (uint32_t& v : t) v = to[v];
+    for (VertexAttribute& a : soup.attributes) {
+        std::vector<double> values(a.values.size());
+        const size_t c = a.components;
+        for (uint32_t v = 0; v < nv; ++v) std::copy_n(a.values.begin() + v * c, c, values.begin() + to[v] * c);
+        a.values = std::move(values);
+    }
 }
 
 }  // namespace singlestrip

@@ -23,4 +23,15 @@ std::vector<uint32_t> spatial_face_order(const std::vector<Point3>& points, cons
 /// engines' per-face arrays then stay in cache) or when a vertex index is out of range. O(F).
 std::vector<uint32_t> locality_order(const TriangleSoup& soup);
 
+/// For a soup already in locality_order(): when its consecutive faces still lie far apart in
+/// vertex numbers (a file whose vertices were shuffled), its vertices numbered by first use
+/// along the faces, unused ones last: result[i] = the vertex that becomes vertex i. Else empty.
+/// Adjacency is found by sorting on vertex numbers, which then stay local. O(V + F).
+std::vector<uint32_t> locality_vertex_order(const TriangleSoup& soup);
+
+/// Renumbers the soup's vertices (points, attribute values, triangles): vertex origin[i] becomes
+/// i, or with `back` i becomes origin[i] again. \pre origin is a permutation of the vertices.
+/// O(V + F).
+void permute_vertices(TriangleSoup& soup, const std::vector<uint32_t>& origin, bool back);
+
 }  // namespace singlestrip

@@ -411,6 +411,8 @@ PreparedSoup prepare_soup_components(TriangleSoup soup, const PrepareOptions& op
     if (opt.locality) out.face_origin = locality_order(soup);
     const bool reordered = !out.face_origin.empty();
     if (reordered) permute_faces(soup, out.face_origin, false);
+    if (reordered && opt.vertex_locality) out.vertex_origin = locality_vertex_order(soup);
+    if (!out.vertex_origin.empty()) permute_vertices(soup, out.vertex_origin, false);
     // One analysis serves every step: flipping faces by the BFS result changes nothing the
     // analysis found except the orientation findings, which it makes consistent (every 2-face
     // edge then has flip[f] xor flip[g] == same-direction, so it runs opposite ways), and
@@ -420,9 +422,10 @@ PreparedSoup prepare_soup_components(TriangleSoup soup, const PrepareOptions& op
     const bool orient = opt.orient && a.orientable && !a.oriented;
     if (orient) a.mark_consistently_oriented();
     if (a.total_problems() > 0) {
-        if (reordered) {  // a refusal names faces as given: analyse the given order again
+        if (reordered) {  // a refusal names faces and vertices as given: analyse the given soup again
+            if (!out.vertex_origin.empty()) permute_vertices(soup, out.vertex_origin, true);
             permute_faces(soup, out.face_origin, true);
-            return prepare_soup_components(std::move(soup), PrepareOptions{opt.orient, false}, filename_for_messages);
+            return prepare_soup_components(std::move(soup), PrepareOptions{opt.orient, false, false}, filename_for_messages);
         }
         throw InputError(join_problems(a.problems(), a.total_problems(), filename_for_messages));
     }

@@ -179,6 +179,27 @@ void Mesh::reserve_for_split() {
     reserve_gently(face_parent_, face_parent_.size() + 2);
 }
 
+void Mesh::renumber_input_vertices(const std::vector<uint32_t>& to) {
+    const size_t n = num_input_vertices_;
+    const auto refuse = [n] {
+        throw InternalError("renumber_input_vertices: not a permutation of the " + std::to_string(n) + " input vertices");
+    };
+    if (to.size() != n) refuse();
+    std::vector<char> hit(n, 0);
+    for (const uint32_t w : to) {
+        if (w >= n || hit[w]) refuse();
+        hit[w] = 1;
+    }
+    for (uint32_t& v : corner_vertex_)
+        if (v < n) v = to[v];
+    std::vector<Point3> points(points_.begin(), points_.begin() + static_cast<std::ptrdiff_t>(n));
+    std::vector<uint32_t> out(vertex_halfedge_.begin(), vertex_halfedge_.begin() + static_cast<std::ptrdiff_t>(n));
+    for (size_t v = 0; v < n; ++v) {
+        points_[to[v]] = points[v];
+        vertex_halfedge_[to[v]] = out[v];
+    }
+}
+
 std::vector<Point3> Mesh::release_points() && {
     std::vector<Point3> p = std::move(points_);
     *this = Mesh();

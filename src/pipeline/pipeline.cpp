@@ -1,10 +1,12 @@
 // The pipeline every front end calls; see pipeline.hpp.
 #include "singlestrip/pipeline.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <string>
 #include <utility>
 
+#include "algo/face_order.hpp"
 #include "components.hpp"
 #include "core/soup_edges.hpp"
 #include "singlestrip/attributes.hpp"
@@ -38,11 +40,14 @@ void enter(PipelineStage* stage, PipelineStage s) {
 /// The one check that each constraint edge is an edge of the soup; the engines then only look
 /// the half-edges up. \throw RequestError naming the edge by its file line, or by its index when
 /// it was given as a pair.
-void check_constraint_edges(const TriangleSoup& soup, const std::vector<ConstraintEdge>& constraints, const PipelineOptions& options) {
+/// `internal` (optional): the soup's number of each given vertex, when they differ.
+void check_constraint_edges(const TriangleSoup& soup, const std::vector<ConstraintEdge>& constraints, const PipelineOptions& options,
+                            const std::vector<uint32_t>* internal) {
     const SoupEdges edges(soup.triangles, soup.points.size());
+    const auto number = [&](uint32_t v) { return internal && v < internal->size() ? (*internal)[v] : v; };
     for (std::size_t i = 0; i < constraints.size(); ++i) {
         const ConstraintEdge& e = constraints[i];
-        if (edges.has_edge(e.a, e.b)) continue;
+        if (edges.has_edge(number(e.a), number(e.b))) continue;
         const std::string pair = "(" + std::to_string(e.a) + ", " + std::to_string(e.b) + ") is not an edge of the mesh";
         if (e.line == 0 || !options.constraints_file) throw RequestError("constraint " + std::to_string(i) + ": " + pair);
         const std::string where = *options.constraints_file + ": line " + std::to_string(e.line) + ": ";
@@ -131,15 +136,38 @@ void warn_unwelded(PipelineResult& r, uint32_t components) {
 
 /// prepare_soup_components() may have reordered the faces for the cache: parents then go
 /// through its face_origin, after repair's.
-void keep_face_origin(PipelineResult& r, const std::vector<uint32_t>& order) {
+void keep_face_origin(PipelineResult& r, std::vector<uint32_t> order) {
     if (order.empty()) return;
     if (r.face_origin.empty()) {
-        r.face_origin = order;
+        r.face_origin = std::move(order);
         return;
     }
     std::vector<uint32_t> composed(order.size());
     for (size_t i = 0; i < order.size(); ++i) composed[i] = r.face_origin[order[i]];
     r.face_origin = std::move(composed);
+}
+
+std::vector<uint32_t> inverse(const std::vector<uint32_t>& origin) {
+    std::vector<uint32_t> inv(origin.size());
+    for (uint32_t i = 0; i < origin.size(); ++i) inv[origin[i]] = i;
+    return inv;
+}
+
+/// prepare_soup_components() numbered the vertices by first use (origin[i] = the given vertex
+/// of vertex i): the engines ran in that numbering; what stripify() returns is in the given one.
+void results_to_given(PipelineResult& r, const std::vector<uint32_t>& origin) {
+    const size_t nv = origin.size();
+    if (r.input.points.size() == nv) permute_vertices(r.input, origin, true);  // lean: the mesh took it
+    if (r.arrays.points.size() >= nv) {
+        const std::vector<Point3> first(r.arrays.points.begin(), r.arrays.points.begin() + static_cast<std::ptrdiff_t>(nv));
+        for (size_t i = 0; i < nv; ++i) r.arrays.points[origin[i]] = first[i];
+    }
+    const auto given = [&](uint32_t& v) { v = v < nv ? origin[v] : v; };
+    for (Triangle& t : r.arrays.faces) std::for_each(t.begin(), t.end(), given);
+    const bool restarts = r.options.join == JoinMode::Restart;
+    for (uint32_t& x : r.indices)
+        if (!restarts || x != r.options.restart_index) given(x);
+    if (r.strip.mesh.num_input_vertices() == nv && nv > 0) r.strip.mesh.renumber_input_vertices(origin);
 }
 
 /// Output vertices get the input's attributes (midpoints blended inside their parent face);
@@ -219,11 +247,14 @@ PipelineResult stripify(TriangleSoup soup, const PipelineOptions& options, Pipel
         throw InputError(options.name + ": " + bad);
     soup = pre_repair(std::move(soup), options, r);
     // A seed face names a face of the given order: no reordering then.
-    const PrepareOptions prep{options.orient || options.repair, !options.strip.seed_face};
+    // A seed face names a face, source and target name vertices of the given numbering (and so do
+    // the messages about them): the soup is then stripped as given.
+    const StripOptions& so = options.strip;
+    const PrepareOptions prep{options.orient || options.repair, !so.seed_face, !so.seed_face && !so.source && !so.target};
     PreparedSoup prepared = prepare_soup_components(std::move(soup), prep, options.name);
     r.input = std::move(prepared.soup);
-    keep_face_origin(r, prepared.face_origin);
-    prepared.face_origin = std::vector<uint32_t>();
+    keep_face_origin(r, std::move(prepared.face_origin));
+    const std::vector<uint32_t> origin = std::move(prepared.vertex_origin);
     std::vector<ConstraintEdge>& constraints = r.options.strip.constraint_edges;
     if (options.constraints_file) {
         enter(stage, PipelineStage::Constraints);
@@ -231,9 +262,15 @@ PipelineResult stripify(TriangleSoup soup, const PipelineOptions& options, Pipel
         const std::vector<ConstraintEdge> read = read_constraints_based(*options.constraints_file, nv, options.index_base);
         constraints.insert(constraints.end(), read.begin(), read.end());
     }
+    std::vector<ConstraintEdge> given_constraints;
     if (!constraints.empty()) {
         enter(stage, PipelineStage::Constraints);
-        check_constraint_edges(r.input, constraints, options);
+        const std::vector<uint32_t> internal = origin.empty() ? std::vector<uint32_t>() : inverse(origin);
+        check_constraint_edges(r.input, constraints, options, origin.empty() ? nullptr : &internal);
+        if (!origin.empty()) {
+            given_constraints = constraints;
+            for (ConstraintEdge& e : constraints) e = ConstraintEdge{internal[e.a], internal[e.b], e.line};
+        }
     }
     const uint32_t count = prepared.num_components;
     std::vector<uint32_t> comp = std::move(prepared.component);
@@ -244,6 +281,10 @@ PipelineResult stripify(TriangleSoup soup, const PipelineOptions& options, Pipel
         strip_one(r, options.self_check, stage);
     } else {
         detail::strip_components(r, comp, count, stage);
+    }
+    if (!origin.empty()) {
+        results_to_given(r, origin);
+        if (!constraints.empty()) constraints = std::move(given_constraints);
     }
     carry_attributes(r);
     map_parents(r);
