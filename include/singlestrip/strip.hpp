@@ -101,7 +101,12 @@ struct StripResult {
 /// matching O(F) expected (docs/algorithm.md).
 StripResult build_strip(Mesh mesh, const StripOptions& options = {});
 
-/// The engines themselves (build_strip() dispatches); same contract as build_strip().
+/// build_strip() without its O(F) count of components, for a caller that knows the mesh is one
+/// edge-connected component (stripify(): its checks counted them). \pre mesh.num_components()
+/// == 1, not checked: a mesh of several ends in an InternalError. Otherwise build_strip()'s contract.
+StripResult build_strip_connected(Mesh mesh, const StripOptions& options = {});
+
+/// The engines themselves (build_strip_connected() dispatches); its contract.
 StripResult build_strip_growth(Mesh mesh, const StripOptions& options);
 StripResult build_strip_matching(Mesh mesh, const StripOptions& options);
 

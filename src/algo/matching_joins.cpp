@@ -75,8 +75,9 @@ bool MatchingBuilder::flip_alternating(FaceId f1) {
         if (matched_[h]) m1 = h;
     if (m1 == kNone) return false;
     const FaceId close_face = across(m1);
-    if (find(sid_[close_face]) == find(sid_[f1])) return false;  // cheap filter: rarely joins loops
-    HalfedgeId path[2 * kMaxLoops];                              // crossed edge, then matched edge, in turn
+    const StructId close_root = find(sid_[close_face]);
+    if (close_root == find(sid_[f1])) return false;  // cheap filter: rarely joins loops
+    HalfedgeId path[2 * kMaxLoops];                  // crossed edge, then matched edge, in turn
     StructId roots[kMaxLoops];
     bool repeated = false;  // a loop met twice, at the crossed edges of depths rep_p and rep_q
     uint32_t rep_p = 0, rep_q = 0;
@@ -98,6 +99,8 @@ bool MatchingBuilder::flip_alternating(FaceId f1) {
     auto search = [&](auto&& self, FaceId f, uint32_t depth) -> bool {
         const StructId r = find(sid_[f]);
         if (!cycle_[r] || pinned_[r] || vlink_[f]) return false;
+        // Crossed edges stay in their loop: at the last depth only close_face's loop can close.
+        if (depth + 1 == kMaxLoops && r != close_root) return false;
         bool repeat = false;
         for (uint32_t i = 0; i < depth; ++i)
             if (roots[i] == r) {

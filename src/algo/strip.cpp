@@ -251,6 +251,10 @@ StripResult build_strip(Mesh mesh, const StripOptions& options) {
     if (const uint32_t parts = mesh.num_components(); parts > 1)
         throw RequestError("the mesh has " + std::to_string(parts) +
                            " edge-connected components; build_strip() strips one (stripify() strips each)");
+    return build_strip_connected(std::move(mesh), options);
+}
+
+StripResult build_strip_connected(Mesh mesh, const StripOptions& options) {
     return options.engine == StripEngine::Growth ? build_strip_growth(std::move(mesh), options)
                                                  : build_strip_matching(std::move(mesh), options);
 }

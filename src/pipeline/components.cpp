@@ -128,7 +128,7 @@ StripResult strip_part(const Part& p, const StripOptions& local, uint32_t c, uin
         if (mesh.num_components() != 1) throw InternalError("a component split into several");
     }
     try {
-        StripResult res = build_strip(std::move(mesh), local);
+        StripResult res = build_strip_connected(std::move(mesh), local);  // one component by construction
         if (self_check) res.mesh.validate();
         return res;
     } catch (const RequestError& e) {

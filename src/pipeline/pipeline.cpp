@@ -214,7 +214,7 @@ void strip_one(PipelineResult& r, bool self_check, PipelineStage* stage) {
     enter(stage, PipelineStage::Mesh);
     Mesh mesh = build_mesh(r.input, self_check, lean);
     enter(stage, PipelineStage::Strip);
-    r.strip = build_strip(std::move(mesh), r.options.strip);
+    r.strip = build_strip_connected(std::move(mesh), r.options.strip);  // the checks counted one component
     if (self_check) r.strip.mesh.validate();
     if (lean) compute_cycles(r, stage);
     enter(stage, PipelineStage::Encode);
