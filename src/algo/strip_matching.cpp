@@ -125,6 +125,9 @@ void MatchingBuilder::split_ears() {
 // form a ring across it), which removes that parity constraint: a serpentine corridor of odd
 // length between walls has no 2-factor until its one-edge gaps are split.
 std::vector<HalfedgeId> MatchingBuilder::dual_bridges() const {
+    // Closed and unconstrained, every vertex has a whole ring of faces, a dual cycle through each
+    // edge at it: no bridge.
+    if (stats_.boundary_loops == 0 && opt_.constraint_edges.empty()) return {};
     const uint32_t nf = mesh_.num_faces();
     constexpr uint32_t kUnseen = 0;  // order is 1-based
     IdVector<FaceId, uint32_t> order(nf, kUnseen), low(nf, 0), size(nf, 1);
