@@ -178,7 +178,7 @@ private:
         return swap_test(h, [&](HalfedgeId e) { return used_[e] != 0; });
     }
     int swaps_around(std::initializer_list<FaceId> faces) const;
-    bool flip_alternating(FaceId f1);
+    bool flip_alternating(FaceId f1, bool one_end);
     std::vector<FaceId> flipped_faces_;  ///< faces whose edges a flip changed (reduce_loops())
     bool meets_first(FaceId from, FaceId back, FaceId good, FaceId bad) const;
     bool try_merge(HalfedgeId h, bool allow_split);

@@ -67,7 +67,9 @@ bool MatchingBuilder::meets_first(FaceId from, FaceId back, FaceId good, FaceId 
 // one. A loop met twice, at crossed edges p then q (tail t, head h), stays joined only if its arc
 // from h_p away from t_p reaches h_q before t_q (else it splits off again): checked by walking
 // it. Depth-first from f1 through at most kMaxLoops crossed edges, at most one loop met twice.
-bool MatchingBuilder::flip_alternating(FaceId f1) {
+// Every face of a cycle starts it (each way round), so a whole-mesh pass may start only at the
+// lower face of each matched pair (`one_end`): half the searches, for the same cycles.
+bool MatchingBuilder::flip_alternating(FaceId f1, bool one_end) {
     constexpr uint32_t kMaxLoops = 4;
     if (vlink_[f1]) return false;
     HalfedgeId m1 = kNone;  // f1's matched edge closes the cycle
@@ -75,6 +77,7 @@ bool MatchingBuilder::flip_alternating(FaceId f1) {
         if (matched_[h]) m1 = h;
     if (m1 == kNone) return false;
     const FaceId close_face = across(m1);
+    if (one_end && close_face < f1) return false;
     const StructId close_root = find(sid_[close_face]);
     if (close_root == find(sid_[f1])) return false;  // cheap filter: rarely joins loops
     HalfedgeId path[2 * kMaxLoops];                  // crossed edge, then matched edge, in turn
@@ -144,7 +147,7 @@ void MatchingBuilder::reduce_loops() {
     IdVector<FaceId, uint32_t> stamp(mesh_.num_faces(), 0);
     std::vector<FaceId> todo;
     flipped_faces_.clear();
-    for (FaceId f : mesh_.faces()) stats_.ring_flips += flip_alternating(f);
+    for (FaceId f : mesh_.faces()) stats_.ring_flips += flip_alternating(f, true);
     for (uint32_t pass = 1; pass < 4 && !flipped_faces_.empty(); ++pass) {
         todo.clear();
         for (FaceId f : flipped_faces_)
@@ -152,7 +155,7 @@ void MatchingBuilder::reduce_loops() {
                 for (FaceId g : {f, mesh_.is_boundary(h) ? f : across(h)})
                     if (stamp[g] != pass) stamp[g] = pass, todo.push_back(g);
         flipped_faces_.clear();
-        for (FaceId f : todo) stats_.ring_flips += flip_alternating(f);
+        for (FaceId f : todo) stats_.ring_flips += flip_alternating(f, false);
     }
 }
 
