@@ -15,23 +15,6 @@
 
 namespace singlestrip::matching {
 
-// The faces of a loop cut open at its crossed half-edge `cut`: from cut's face round to the face
-// across it.
-std::vector<FaceId> MatchingBuilder::loop_from(HalfedgeId cut) const {
-    std::vector<FaceId> seq;
-    HalfedgeId in = cut;
-    FaceId f = Mesh::face(cut);
-    for (;;) {
-        seq.push_back(f);
-        HalfedgeId out = kNone;
-        for (HalfedgeId h : sides(f))
-            if (used_[h] && h != in) out = h;
-        if (out == kNone || out == mesh_.twin(cut)) return seq;
-        in = mesh_.twin(out);
-        f = Mesh::face(in);
-    }
-}
-
 // Swaps at the crossed edges of the given faces (each edge counted once).
 int MatchingBuilder::swaps_around(std::initializer_list<FaceId> faces) const {
     HalfedgeId seen[9];
@@ -119,7 +102,7 @@ void PathGrower::start(StructId path_root) {
             break;
         }
     root_ = b_.find(b_.sid_[Mesh::face(cut)]);
-    path_.append(b_.loop_from(cut));
+    (void)path_.append_from(b_.loop_from(cut));
     b_.set_pair(b_.used_, cut, 0);
     b_.cycle_[root_] = 0;
     ends_[0] = Mesh::face(cut);
@@ -150,12 +133,11 @@ PathGrower::Take PathGrower::best_take(uint32_t side) {
 }
 
 void PathGrower::take(uint32_t side, const Take& t) {
-    std::vector<FaceId> seq = b_.loop_from(t.cut);
+    // The loop goes in as it is walked, before its crossed edges change.
+    ends_[side] = side ? path_.append_from(b_.loop_from(t.cut)) : path_.prepend_from(b_.loop_from(t.cut));
     b_.uf_[b_.find(b_.sid_[Mesh::face(t.cut)])] = root_;
     b_.set_pair(b_.used_, t.cut, 0);
     b_.set_pair(b_.used_, t.link, 1);
-    side ? path_.append(seq) : path_.prepend(seq);
-    ends_[side] = seq.back();
     --loops_;
     ++b_.stats_.absorbed;
     trial_.clear();

@@ -122,6 +122,8 @@ private:
     // Augmenting path from one short face through blossoms (matching_blossom.cpp).
     enum class Search { Found, NoPath, Unknown };
     Search blossom_search(FaceId root, size_t budget);
+    /// Gives blossom_search()'s per-face arrays back (the next search makes them again).
+    void release_blossom_arrays() noexcept { bl_stamp_.reset(), bl_seen_.reset(), bl_base_.reset(), bl_label_.reset(), bl_parent_.reset(); }
     [[nodiscard]] bool in_blossom_graph(FaceId f) const;
     [[nodiscard]] HalfedgeId mate_edge(FaceId f) const;
     FaceId blossom_base(FaceId f);
@@ -173,7 +175,24 @@ private:
     void reduce_loops();
     void absorb_loops();
     friend class PathGrower;
-    std::vector<FaceId> loop_from(HalfedgeId cut) const;
+    /// The faces of a loop cut open at its crossed half-edge `cut`, from cut's face round to the
+    /// face across it: the generator returns one per call, then kNone. Reads used_ as it goes.
+    [[nodiscard]] auto loop_from(HalfedgeId cut) const {
+        return [this, cut, in = cut, f = Mesh::face(cut)]() mutable -> FaceId {
+            const FaceId here = f;
+            if (here == kNone) return here;
+            HalfedgeId out = kNone;
+            for (HalfedgeId h : sides(here))
+                if (used_[h] && h != in) out = h;
+            if (out == kNone || out == mesh_.twin(cut)) {
+                f = kNone;
+            } else {
+                in = mesh_.twin(out);
+                f = Mesh::face(in);
+            }
+            return here;
+        };
+    }
     [[nodiscard]] int swap_at(HalfedgeId h) const {
         return swap_test(h, [&](HalfedgeId e) { return used_[e] != 0; });
     }

@@ -177,11 +177,19 @@ void MatchingBuilder::match_ball(const std::vector<FaceId>& kept, const std::vec
 // Faces the matching left short: local augmenting searches with a growing budget; what is still
 // short drops crossed edges instead (each drop leaves a path end).
 void MatchingBuilder::repair_short(std::vector<FaceId>& short_faces) {
+    if (short_faces.empty()) return;
     const uint32_t nf = mesh_.num_faces();
-    IdVector<FaceId, uint32_t> stamp(nf, 0);
-    aug_prev_.assign(nf, kNone);
-    aug_matched_.assign(nf, kNone);
-    aug_unmatched_.assign(nf, kNone);
+    // The plain searches' and Edmonds' per-face arrays (16 and 17 bytes a face) are never held
+    // together: together they were the matching engine's memory peak (genus-20 surface, 2M faces).
+    IdVector<FaceId, uint32_t> stamp;
+    auto plain_arrays = [&](bool on) {
+        if (on) {
+            stamp.assign(nf, 0), aug_prev_.assign(nf, kNone), aug_matched_.assign(nf, kNone), aug_unmatched_.assign(nf, kNone);
+        } else {
+            stamp.reset(), aug_prev_.reset(), aug_matched_.reset(), aug_unmatched_.reset();
+        }
+    };
+    plain_arrays(true);
     uint32_t mark = 0;
     for (size_t budget : {size_t{64}, size_t{1024}}) {
         for (FaceId f : short_faces)
@@ -189,6 +197,8 @@ void MatchingBuilder::repair_short(std::vector<FaceId>& short_faces) {
             }
         std::erase_if(short_faces, [&](FaceId f) { return quota_[f] == 0; });
     }
+    plain_arrays(false);
+    if (short_faces.empty()) return;
     // Edmonds from each face alone, bounded so that all of them touch O(F) faces: a face it
     // proves hopeless needs no ball. No upper cap: the last few short faces of a large mesh can
     // be far apart (genus-20 surface, 1.7M faces: two faces past any ball, growth fallback 2.6 s;
@@ -203,6 +213,7 @@ void MatchingBuilder::repair_short(std::vector<FaceId>& short_faces) {
         return r != Search::Unknown;
     });
     std::erase_if(short_faces, [&](FaceId f) { return quota_[f] == 0; });
+    release_blossom_arrays();
     // Edmonds on balls: each face's own, then one search over the union of larger balls (it
     // costs O(ball) per augmenting path).
     // Larger balls only for few faces: many faces still short are structural (no 2-factor).
@@ -210,6 +221,7 @@ void MatchingBuilder::repair_short(std::vector<FaceId>& short_faces) {
         const size_t most = ball == 512 ? SIZE_MAX : ball == kBallOneByOne ? 64 : 16;
         if (short_faces.empty() || short_faces.size() > most) break;
         if (ball > kBallOneByOne) {  // a long plain search first: far cheaper than Edmonds on the union
+            if (stamp.empty()) plain_arrays(true);
             for (FaceId f : short_faces)
                 while (quota_[f] > 0 && augment_from(f, stamp, ++mark, size_t{1} << 17)) {
                 }
@@ -218,6 +230,7 @@ void MatchingBuilder::repair_short(std::vector<FaceId>& short_faces) {
         }
         if (!repair_in_balls(short_faces, ball)) break;
     }
+    plain_arrays(false);
     short_faces.insert(short_faces.end(), hopeless.begin(), hopeless.end());
 }
 

@@ -33,34 +33,6 @@ void PathOrder::pull(FaceId x) {
         if (c != kNone) size_[x] += size_[c], parent_[c] = x;
 }
 
-// Cartesian tree of `items` by priority, in linear time (right spine on a stack).
-FaceId PathOrder::build(const std::vector<FaceId>& items, bool reversed) {
-    std::vector<FaceId> spine;
-    const std::size_t n = items.size();
-    for (std::size_t i = 0; i < n; ++i) {
-        const FaceId x = items[reversed ? n - 1 - i : i];
-        left_[x] = right_[x] = parent_[x] = kNone;
-        flip_[x] = 0;
-        FaceId last;
-        while (!spine.empty() && priority(spine.back()) < priority(x)) {
-            last = spine.back();
-            spine.pop_back();
-            pull(last);
-        }
-        left_[x] = last;
-        if (!spine.empty()) right_[spine.back()] = x;
-        spine.push_back(x);
-    }
-    while (!spine.empty()) {
-        pull(spine.back());
-        if (spine.size() == 1) break;
-        spine.pop_back();
-    }
-    if (spine.empty()) return kNone;
-    parent_[spine.front()] = kNone;
-    return spine.front();
-}
-
 FaceId PathOrder::merge(FaceId a, FaceId b) {
     if (a == kNone) return b;
     if (b == kNone) return a;
@@ -100,11 +72,13 @@ void PathOrder::split(FaceId t, uint32_t k, FaceId& a, FaceId& b) {
 }
 
 void PathOrder::append(const std::vector<FaceId>& items) {
-    root_ = merge(root_, build(items, false));
+    size_t i = 0;
+    (void)append_from([&] { return i < items.size() ? items[i++] : FaceId(kNone); });
 }
 
 void PathOrder::prepend(const std::vector<FaceId>& items) {
-    root_ = merge(build(items, true), root_);
+    size_t i = 0;
+    (void)prepend_from([&] { return i < items.size() ? items[i++] : FaceId(kNone); });
 }
 
 uint32_t PathOrder::position(FaceId x) {

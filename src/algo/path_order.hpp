@@ -22,6 +22,24 @@ public:
     /// Puts `items` before the front, items[0] next to the old front and items.back() first (the
     /// path grows from its front end as it does from its back end). O(k + log n).
     void prepend(const std::vector<FaceId>& items);
+    /// append() with the items given one by one: next() returns each, then kNone (a walk feeds
+    /// the sequence without an array of its own). Returns the last item, kNone if none.
+    template <class Next>
+    FaceId append_from(Next&& next) {
+        FaceId last = kNone;
+        const FaceId t = build(next, last);
+        root_ = merge(root_, t);
+        return last;
+    }
+    /// prepend() with the items given one by one (items[0] first); returns the last (the new front).
+    template <class Next>
+    FaceId prepend_from(Next&& next) {
+        FaceId last = kNone;
+        const FaceId t = build(next, last);
+        if (t != kNone) flip_[t] ^= 1;  // built in order, then reversed lazily
+        root_ = merge(t, root_);
+        return last;
+    }
     /// Position of face x (0 = front). \pre x is in the sequence. O(log n) expected.
     [[nodiscard]] uint32_t position(FaceId x);
     /// Face at position k. \pre k < size(). O(log n) expected.
@@ -48,7 +66,36 @@ private:
     [[nodiscard]] uint32_t count(FaceId x) const { return x == kNone ? 0 : size_[x]; }
     void push(FaceId x);
     void pull(FaceId x);
-    [[nodiscard]] FaceId build(const std::vector<FaceId>& items, bool reversed);
+    std::vector<FaceId> spine_;  ///< scratch of build()
+
+    /// Cartesian tree by priority of the items next() gives, in linear time (the right spine on
+    /// a stack); `last` = the last item.
+    template <class Next>
+    [[nodiscard]] FaceId build(Next& next, FaceId& last) {
+        spine_.clear();
+        for (FaceId x = next(); x != kNone; x = next()) {
+            last = x;
+            right_[x] = parent_[x] = kNone;
+            flip_[x] = 0;
+            FaceId below = kNone;
+            while (!spine_.empty() && priority(spine_.back()) < priority(x)) {
+                below = spine_.back();
+                spine_.pop_back();
+                pull(below);
+            }
+            left_[x] = below;
+            if (!spine_.empty()) right_[spine_.back()] = x;
+            spine_.push_back(x);
+        }
+        while (spine_.size() > 1) {
+            pull(spine_.back());
+            spine_.pop_back();
+        }
+        if (spine_.empty()) return kNone;
+        pull(spine_.front());
+        parent_[spine_.front()] = kNone;
+        return spine_.front();
+    }
     [[nodiscard]] FaceId merge(FaceId a, FaceId b);
     void split(FaceId t, uint32_t k, FaceId& a, FaceId& b);
 };

@@ -29,6 +29,8 @@ public:
     void resize(size_t n, const T& value) { v_.resize(n, value); }
     void assign(size_t n, const T& value) { v_.assign(n, value); }
     void clear() noexcept { v_.clear(); }
+    /// Empty, its memory given back (clear() keeps the capacity).
+    void reset() noexcept { std::vector<T>().swap(v_); }
     void push_back(const T& value) { v_.push_back(value); }
     void pop_back() noexcept { v_.pop_back(); }
     [[nodiscard]] T& back() noexcept { return v_.back(); }
