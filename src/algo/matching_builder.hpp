@@ -122,6 +122,7 @@ private:
     // Augmenting path from one short face through blossoms (matching_blossom.cpp).
     enum class Search { Found, NoPath, Unknown };
     Search blossom_search(FaceId root, size_t budget);
+    void release_work_arrays() noexcept;
     /// Gives blossom_search()'s per-face arrays back (the next search makes them again).
     void release_blossom_arrays() noexcept { bl_stamp_.reset(), bl_seen_.reset(), bl_base_.reset(), bl_label_.reset(), bl_parent_.reset(); }
     [[nodiscard]] bool in_blossom_graph(FaceId f) const;

@@ -385,6 +385,15 @@ StripResult MatchingBuilder::finish(std::vector<uint32_t> order) {
     return result;
 }
 
+// Before the growth builder runs: the matching's arrays are done with (the growth builder's
+// own and a second mesh would otherwise sit beside them at the peak).
+void MatchingBuilder::release_work_arrays() noexcept {
+    blocked_.reset(), matched_.reset(), used_.reset(), vlink_.reset(), quota_.reset(), sid_.reset();
+    uf_.reset(), cycle_.reset(), pinned_.reset(), ch_stamp_.reset(), ball_local_.reset(), ball_whole_.reset();
+    aug_prev_.reset(), aug_matched_.reset(), aug_unmatched_.reset();
+    release_blossom_arrays();
+}
+
 // The growth builder on `mesh` (the input or a partly split copy that already cost `splits`);
 // an empty result when it fails (a broken precondition on a partly split mesh).
 StripResult MatchingBuilder::grow(Mesh mesh, uint32_t splits) const {
@@ -438,6 +447,7 @@ StripResult MatchingBuilder::fallback() {
     // The input mesh is a candidate too: the engine's splits (ears, bridges, parity) can cost the
     // growth builder more than they save (boeing.off's small parts: +90% against +26%).
     Mesh original = input_mesh();  // before mesh_ is handed over
+    release_work_arrays();
     StripResult r;
     keep_better(r, grow(std::move(mesh_), stats_.splits));
     if (pre_merge_) keep_better(r, grow(pre_merge_mesh(original), pre_merge_splits_));  // without the joins' splits
@@ -459,6 +469,7 @@ StripResult MatchingBuilder::finish_or_grow(std::vector<uint32_t> order) {
     if (stats_.parity_splits == 0) return finish(std::move(order));
     Mesh original = input_mesh();
     StripResult r = finish(std::move(order));
+    release_work_arrays();
     StripResult g;
     if (chain_splits_ && pre_merge_) keep_better(g, grow(pre_merge_mesh(original), pre_merge_splits_));
     keep_better(g, grow(std::move(original), 0));
