@@ -156,6 +156,27 @@ TEST_P(Constraints, ThousandRandomCasesWithEndpoints) {
     EXPECT_GT(verified, 700);
 }
 
+// Edge flips on a grid without jitter leave input edges through input vertices (zero-area
+// faces). A constraint along such an edge has other vertices on its line: the verifier judges
+// the constraint by the mesh's edges, not by that geometry.
+TEST_P(Constraints, DegenerateInputWithVerticesOnConstraintLines) {
+    std::mt19937_64 rng(99);
+    int verified = 0;
+    for (int i = 0; i < 60; ++i) {
+        TriangleSoup soup = make_genus_with_holes(1 + i % 3, 1 + i % 5, 6 + i % 8);
+        random_edge_flips(soup, soup.triangles.size() / 5, 100 + i);
+        StripOptions o = opts();
+        o.constraint_edges = as_constraints(random_polylines(soup, rng, 2 + i % 4, 16));
+        if (pieces_after_cutting(soup, vertex_pairs(o.constraint_edges)) != 1) continue;
+        SCOPED_TRACE("case " + std::to_string(i));
+        const auto c = strip_and_verify(soup, o);
+        EXPECT_TRUE(c.report.ok()) << describe(c);
+        ++verified;
+        if (::testing::Test::HasFailure()) break;
+    }
+    EXPECT_GT(verified, 30);
+}
+
 TEST_P(Constraints, LoopsAroundTorusHandles) {
     const uint32_t nm = 12, nn = 8;
     const TriangleSoup torus = make_torus(nm, nn);

@@ -45,14 +45,17 @@ void check_constraints(const Checked& chk) {
             }
         };
         std::vector<std::pair<uint32_t, uint32_t>> es;
-        // No output vertex strictly inside a constraint edge.
+        // No output vertex strictly inside a constraint edge. A constraint that is still an
+        // output edge was not split: another vertex on its line is the input's degenerate
+        // geometry (an input edge through an input vertex, or a midpoint of an edge along it).
+        auto whole = [&](uint32_t u, uint32_t v) { return out.has_edge(u, v); };
         for (uint32_t f = 0; f < F; ++f) {
             if (!out.face_ok[f] || parent[f] == kNo) continue;
             es.clear();
             constraint_edges_of(parent[f], es);
             for (const auto& [u, v] : es)
                 for (uint32_t p : in.out_faces[f]) {
-                    if (p == u || p == v) continue;
+                    if (p == u || p == v || whole(u, v)) continue;
                     double t = 0;
                     if (on_segment(in.in_points[u], in.in_points[v], in.out_points[p], &t) && t > kRelTol && t < 1 - kRelTol)
                         fails.add("constraints", "vertex " + std::to_string(p) + " (face " + std::to_string(f) +
@@ -70,7 +73,9 @@ void check_constraints(const Checked& chk) {
             if (parent[f + 1] != parent[f]) constraint_edges_of(parent[f + 1], es);
             for (const auto& [u, v] : es) {
                 const V3 U = in.in_points[u], Vv = in.in_points[v];
-                if (on_segment(U, Vv, in.out_points[common[0]]) && on_segment(U, Vv, in.out_points[common[1]])) {
+                const bool piece = whole(u, v) ? ukey(common[0], common[1]) == ukey(u, v)
+                                               : on_segment(U, Vv, in.out_points[common[0]]) && on_segment(U, Vv, in.out_points[common[1]]);
+                if (piece) {
                     fails.add("constraints", "faces " + std::to_string(f) + " and " + std::to_string(f + 1) + " share edge (" +
                                                  std::to_string(common[0]) + "," + std::to_string(common[1]) + ") on constraint edge (" +
                                                  std::to_string(u) + "," + std::to_string(v) + "): the strip crosses a constraint");
