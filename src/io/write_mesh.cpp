@@ -57,20 +57,44 @@ void put_double(std::ostream& out, double v) {
     out.write(buf, res.ptr - buf);
 }
 
+/// Binary records gathered and handed to the stream in 1 MB blocks: one ostream::write per
+/// value cost more than everything else the writer does (1M-face binary PLY: 0.15 s).
+class Blocks {
+public:
+    explicit Blocks(std::ostream& out) : out_(out) { buf_.reserve(kBlock); }
+    Blocks(const Blocks&) = delete;
+    Blocks& operator=(const Blocks&) = delete;
+    ~Blocks() { flush(); }
+    void put(const unsigned char* p, std::size_t n) {
+        if (buf_.size() + n > kBlock) flush();
+        buf_.insert(buf_.end(), p, p + n);
+    }
+    void flush() {
+        out_.write(buf_.data(), static_cast<std::streamsize>(buf_.size()));
+        buf_.clear();
+    }
+
+private:
+    static constexpr std::size_t kBlock = std::size_t{1} << 20;
+    std::ostream& out_;
+    std::vector<char> buf_;
+};
+
 template <class T>
-void put_le(std::ostream& out, T v) {
+void put_le(Blocks& out, T v) {
     static_assert(std::is_trivially_copyable_v<T>);
     unsigned char b[sizeof(T)];
     std::memcpy(b, &v, sizeof(T));
     if constexpr (std::endian::native == std::endian::big) std::reverse(b, b + sizeof(T));
-    out.write(reinterpret_cast<const char*>(b), sizeof(T));
+    out.put(b, sizeof(T));
 }
 
 /// Binary STL: 80-byte header, facet count, then per face its float32 unit normal (zero for a
 /// degenerate face), three float32 corners and a zero attribute word.
-void write_binary_stl(std::ostream& out, const std::vector<Point3>& points, const std::vector<Triangle>& faces) {
+void write_binary_stl(std::ostream& stream, const std::vector<Point3>& points, const std::vector<Triangle>& faces) {
     char header[80] = "singlestrip: faces in strip order (binary STL, float32)";
-    out.write(header, sizeof header);
+    stream.write(header, sizeof header);
+    Blocks out(stream);
     put_le(out, static_cast<uint32_t>(faces.size()));
     for (const Triangle& t : faces) {
         const Point3 &a = points[t[0]], &b = points[t[1]], &c = points[t[2]];
@@ -116,7 +140,7 @@ std::vector<std::pair<std::string, const char*>> ply_properties(const VertexAttr
 }
 
 /// One attribute value as its PLY property type.
-void put_ply_value(std::ostream& out, const char* type, double x) {
+void put_ply_value(Blocks& out, const char* type, double x) {
     if (type[0] == 'u')
         put_le<uint8_t>(out, static_cast<uint8_t>(std::lround(std::clamp(x, 0.0, 1.0) * 255)));
     else if (type[0] == 'f')
@@ -125,6 +149,23 @@ void put_ply_value(std::ostream& out, const char* type, double x) {
         put_le(out, static_cast<int32_t>(std::clamp(std::round(x), -2147483648.0, 2147483647.0)));
     else
         put_le(out, x);
+}
+
+void write_ply_body(std::ostream& stream, const std::vector<Point3>& points, const std::vector<Triangle>& faces,
+                    const std::vector<uint32_t>& parent, const std::vector<VertexAttribute>& attrs,
+                    const std::vector<std::vector<std::pair<std::string, const char*>>>& props) {
+    Blocks out(stream);
+    for (std::size_t v = 0; v < points.size(); ++v) {
+        for (double c : points[v]) put_le(out, c);
+        for (std::size_t i = 0; i < attrs.size(); ++i)
+            for (uint32_t c = 0; c < attrs[i].components; ++c)
+                put_ply_value(out, props[i][c].second, attrs[i].values[v * attrs[i].components + c]);
+    }
+    for (std::size_t f = 0; f < faces.size(); ++f) {
+        put_le<uint8_t>(out, 3);
+        for (uint32_t v : faces[f]) put_le(out, v);
+        put_le(out, parent[f]);
+    }
 }
 
 void write_ply(std::ostream& out, const std::vector<Point3>& points, const std::vector<Triangle>& faces,
@@ -137,17 +178,7 @@ void write_ply(std::ostream& out, const std::vector<Point3>& points, const std::
         for (const auto& [name, type] : props.back()) out << "property " << type << ' ' << name << '\n';
     }
     out << "element face " << faces.size() << "\nproperty list uchar uint vertex_indices\nproperty uint parent\nend_header\n";
-    for (std::size_t v = 0; v < points.size(); ++v) {
-        for (double c : points[v]) put_le(out, c);
-        for (std::size_t i = 0; i < attrs.size(); ++i)
-            for (uint32_t c = 0; c < attrs[i].components; ++c)
-                put_ply_value(out, props[i][c].second, attrs[i].values[v * attrs[i].components + c]);
-    }
-    for (std::size_t f = 0; f < faces.size(); ++f) {
-        put_le<uint8_t>(out, 3);
-        for (uint32_t v : faces[f]) put_le(out, v);
-        put_le(out, parent[f]);
-    }
+    write_ply_body(out, points, faces, parent, attrs, props);
 }
 
 void put_numbers(std::ostream& out, const char* record, const double* x, std::size_t k) {
