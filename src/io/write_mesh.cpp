@@ -12,6 +12,7 @@
 #include <fstream>
 #include <random>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -50,13 +51,6 @@ void write_atomically(const std::string& path, Fill&& fill) {
     }
 }
 
-void put_double(std::ostream& out, double v) {
-    char buf[64];
-    // Shortest round-trip representation: the coordinates read back bit-exact.
-    auto res = std::to_chars(buf, buf + sizeof buf, v);
-    out.write(buf, res.ptr - buf);
-}
-
 /// Binary records gathered and handed to the stream in 1 MB blocks: one ostream::write per
 /// value cost more than everything else the writer does (1M-face binary PLY: 0.15 s).
 class Blocks {
@@ -65,9 +59,19 @@ public:
     Blocks(const Blocks&) = delete;
     Blocks& operator=(const Blocks&) = delete;
     ~Blocks() { flush(); }
-    void put(const unsigned char* p, std::size_t n) {
+    void put(const char* p, std::size_t n) {
         if (buf_.size() + n > kBlock) flush();
         buf_.insert(buf_.end(), p, p + n);
+    }
+    void put(const unsigned char* p, std::size_t n) { put(reinterpret_cast<const char*>(p), n); }
+    // Text as an ostream would write it (decimal integers), for the OBJ and OFF writers.
+    Blocks& operator<<(const char* s) { return put(s, std::strlen(s)), *this; }
+    Blocks& operator<<(char c) { return put(&c, 1), *this; }
+    template <class T>
+    requires std::is_integral_v<T> &&(!std::is_same_v<T, char>)&&(!std::is_same_v<T, bool>)Blocks& operator<<(T v) {
+        char b[24];
+        const auto r = std::to_chars(b, b + sizeof b, v);
+        return put(b, static_cast<std::size_t>(r.ptr - b)), *this;
     }
     void flush() {
         out_.write(buf_.data(), static_cast<std::streamsize>(buf_.size()));
@@ -79,6 +83,13 @@ private:
     std::ostream& out_;
     std::vector<char> buf_;
 };
+
+void put_double(Blocks& out, double v) {
+    char buf[64];
+    // Shortest round-trip representation: the coordinates read back bit-exact.
+    auto res = std::to_chars(buf, buf + sizeof buf, v);
+    out.put(buf, static_cast<std::size_t>(res.ptr - buf));
+}
 
 template <class T>
 void put_le(Blocks& out, T v) {
@@ -181,7 +192,7 @@ void write_ply(std::ostream& out, const std::vector<Point3>& points, const std::
     write_ply_body(out, points, faces, parent, attrs, props);
 }
 
-void put_numbers(std::ostream& out, const char* record, const double* x, std::size_t k) {
+void put_numbers(Blocks& out, const char* record, const double* x, std::size_t k) {
     out << record;
     for (std::size_t i = 0; i < k; ++i) {
         out << ' ';
@@ -192,8 +203,9 @@ void put_numbers(std::ostream& out, const char* record, const double* x, std::si
 
 /// OBJ holds texture coordinates and normals: one vt / vn per vertex, so every index stream of
 /// a face is the vertex number ("f a/a/a"); colours go after the coordinates ("v x y z r g b").
-void write_obj(std::ostream& out, const std::vector<Point3>& points, const std::vector<Triangle>& faces,
+void write_obj(std::ostream& stream, const std::vector<Point3>& points, const std::vector<Triangle>& faces,
                const std::vector<VertexAttribute>& attrs) {
+    Blocks out(stream);
     const VertexAttribute* uv = find_attribute(attrs, "TEXCOORD_0");
     const VertexAttribute* n = find_attribute(attrs, "NORMAL");
     if (uv && uv->components != 2) uv = nullptr;
@@ -231,8 +243,9 @@ void write_obj(std::ostream& out, const std::vector<Point3>& points, const std::
 
 /// [ST][C][N]OFF: a vertex line is x y z [nx ny nz] [r g b [a]] [s t] (Geomview's order), colours
 /// as fractions clamped into [0, 1] (the reader takes integers above 1 for bytes).
-void write_off(std::ostream& out, const std::vector<Point3>& points, const std::vector<Triangle>& faces,
+void write_off(std::ostream& stream, const std::vector<Point3>& points, const std::vector<Triangle>& faces,
                const std::vector<VertexAttribute>& attrs) {
+    Blocks out(stream);
     const VertexAttribute* n = find_attribute(attrs, "NORMAL");
     const VertexAttribute* rgb = find_attribute(attrs, "COLOR_0");
     const VertexAttribute* st = find_attribute(attrs, "TEXCOORD_0");
@@ -292,7 +305,8 @@ void write_strip_mesh(const std::string& path, const std::vector<Point3>& points
 }
 
 void write_indices(const std::string& path, const std::vector<uint32_t>& indices) {
-    write_atomically(path, [&](std::ofstream& out) {
+    write_atomically(path, [&](std::ofstream& stream) {
+        Blocks out(stream);
         for (std::size_t i = 0; i < indices.size(); ++i) {
             out << indices[i];
             out << ((i % 16 == 15 || i + 1 == indices.size()) ? '\n' : ' ');
