@@ -118,15 +118,15 @@ std::vector<uint32_t> locality_vertex_order(const TriangleSoup& soup) {
     return origin;
 }
 
+std::vector<uint32_t> inverse_permutation(const std::vector<uint32_t>& p) {
+    std::vector<uint32_t> inv(p.size());
+    for (uint32_t i = 0; i < p.size(); ++i) inv[p[i]] = i;
+    return inv;
+}
+
 void permute_vertices(TriangleSoup& soup, const std::vector<uint32_t>& origin, bool back) {
     const size_t nv = origin.size();
-    std::vector<uint32_t> to(nv);  // vertex of the current numbering -> of the new one
-    for (uint32_t i = 0; i < nv; ++i) {
-        if (back)
-            to[i] = origin[i];
-        else
-            to[origin[i]] = i;
-    }
+    const std::vector<uint32_t> to = back ? origin : inverse_permutation(origin);  // current number -> new
     std::vector<Point3> points(nv);
     for (uint32_t v = 0; v < nv; ++v) points[to[v]] = soup.points[v];
     soup.points = std::move(points);

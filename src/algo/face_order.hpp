@@ -29,6 +29,9 @@ std::vector<uint32_t> locality_order(const TriangleSoup& soup);
 /// Adjacency is found by sorting on vertex numbers, which then stay local. O(V + F).
 std::vector<uint32_t> locality_vertex_order(const TriangleSoup& soup);
 
+/// p's inverse: result[p[i]] = i. \pre p is a permutation of 0 .. p.size() - 1. O(n).
+std::vector<uint32_t> inverse_permutation(const std::vector<uint32_t>& p);
+
 /// Renumbers the soup's vertices (points, attribute values, triangles): vertex origin[i] becomes
 /// i, or with `back` i becomes origin[i] again. \pre origin is a permutation of the vertices.
 /// O(V + F).

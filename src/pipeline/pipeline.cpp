@@ -147,12 +147,6 @@ void keep_face_origin(PipelineResult& r, std::vector<uint32_t> order) {
     r.face_origin = std::move(composed);
 }
 
-std::vector<uint32_t> inverse(const std::vector<uint32_t>& origin) {
-    std::vector<uint32_t> inv(origin.size());
-    for (uint32_t i = 0; i < origin.size(); ++i) inv[origin[i]] = i;
-    return inv;
-}
-
 /// prepare_soup_components() numbered the vertices by first use (origin[i] = the given vertex
 /// of vertex i): the engines ran in that numbering; what stripify() returns is in the given one.
 void results_to_given(PipelineResult& r, const std::vector<uint32_t>& origin) {
@@ -246,7 +240,6 @@ PipelineResult stripify(TriangleSoup soup, const PipelineOptions& options, Pipel
     if (const std::string bad = attribute_problem(soup.attributes, soup.points.size()); !bad.empty())
         throw InputError(options.name + ": " + bad);
     soup = pre_repair(std::move(soup), options, r);
-    // A seed face names a face of the given order: no reordering then.
     // A seed face names a face, source and target name vertices of the given numbering (and so do
     // the messages about them): the soup is then stripped as given.
     const StripOptions& so = options.strip;
@@ -265,7 +258,7 @@ PipelineResult stripify(TriangleSoup soup, const PipelineOptions& options, Pipel
     std::vector<ConstraintEdge> given_constraints;
     if (!constraints.empty()) {
         enter(stage, PipelineStage::Constraints);
-        const std::vector<uint32_t> internal = origin.empty() ? std::vector<uint32_t>() : inverse(origin);
+        const std::vector<uint32_t> internal = origin.empty() ? std::vector<uint32_t>() : inverse_permutation(origin);
         check_constraint_edges(r.input, constraints, options, origin.empty() ? nullptr : &internal);
         if (!origin.empty()) {
             given_constraints = constraints;
