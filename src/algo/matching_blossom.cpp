@@ -114,7 +114,8 @@ MatchingBuilder::Search MatchingBuilder::blossom_search(FaceId root, size_t budg
             if (!passable(h) || matched_[h]) continue;
             const FaceId to = across(h);
             if (!in_blossom_graph(to)) {
-                exact = false;
+                // A face that takes no matched edge is no vertex of the graph (as in the balls).
+                exact &= degree(to) + vlink_[to] <= 2 && num_matched(to) == 0;
                 continue;
             }
             blossom_touch(to);
