@@ -99,9 +99,35 @@ bool same_oriented(const ss::Triangle& a, const ss::Triangle& b) {
     return false;
 }
 
+/// Ears (faces with a single interior edge) and spikes (ears whose neighbour has only two).
+/// Each ear needs a split of its edge; a spike is entered and left through its neighbour's other
+/// edge alone, which needs a split too. A strip's two ends spare at most four of these splits, so
+/// every single strip has at least 2·(ears + spikes) − 8 extra triangles (docs/algorithm.md, step 3).
+void count_ears(const ss::TriangleSoup& s, const std::vector<uint64_t>& sorted_edges, uint64_t& ears, uint64_t& spikes) {
+    auto key = [](const ss::Triangle& t, int k) { return uint64_t{t[k]} << 32 | t[(k + 1) % 3]; };
+    auto twin = [](uint64_t x) { return (x & 0xffffffffu) << 32 | x >> 32; };
+    auto inner = [&](const ss::Triangle& t) {
+        int n = 0;
+        for (int k = 0; k < 3; ++k) n += std::binary_search(sorted_edges.begin(), sorted_edges.end(), twin(key(t, k)));
+        return n;
+    };
+    std::vector<uint64_t> into_ears;  // the neighbours' half-edges into each ear
+    for (const ss::Triangle& t : s.triangles) {
+        if (inner(t) != 1) continue;
+        for (int k = 0; k < 3; ++k)
+            if (std::binary_search(sorted_edges.begin(), sorted_edges.end(), twin(key(t, k)))) into_ears.push_back(twin(key(t, k)));
+    }
+    std::sort(into_ears.begin(), into_ears.end());
+    ears = into_ears.size();
+    spikes = 0;
+    for (const ss::Triangle& t : s.triangles)
+        for (int k = 0; k < 3; ++k)
+            if (std::binary_search(into_ears.begin(), into_ears.end(), key(t, k)) && inner(t) == 2) ++spikes;
+}
+
 /// Interior vertices and those whose valence is not a multiple of 3. Each such vertex forces
 /// half a swap in any strip (issue 15), so 1 + off3 / (2F) indices per triangle is a floor.
-void count_interior_valence(const ss::TriangleSoup& s, uint64_t& interior, uint64_t& off3, uint64_t& max_valence) {
+void count_interior_valence(const ss::TriangleSoup& s, Reference& r) {
     std::vector<uint64_t> e;
     e.reserve(s.triangles.size() * 3);
     std::vector<uint32_t> deg(s.points.size(), 0);
@@ -116,12 +142,13 @@ void count_interior_valence(const ss::TriangleSoup& s, uint64_t& interior, uint6
         const uint64_t twin = (x & 0xffffffffu) << 32 | x >> 32;
         if (!std::binary_search(e.begin(), e.end(), twin)) boundary[x >> 32] = boundary[x & 0xffffffffu] = 1;
     }
-    interior = off3 = 0;
-    max_valence = deg.empty() ? 0 : *std::max_element(deg.begin(), deg.end());
+    count_ears(s, e, r.ears, r.spikes);
+    r.interior = r.interior_off3 = 0;
+    r.max_valence = deg.empty() ? 0 : *std::max_element(deg.begin(), deg.end());
     for (size_t v = 0; v < deg.size(); ++v) {
         if (deg[v] == 0 || boundary[v]) continue;
-        ++interior;
-        off3 += deg[v] % 3 != 0;
+        ++r.interior;
+        r.interior_off3 += deg[v] % 3 != 0;
     }
 }
 
@@ -349,7 +376,7 @@ Reference measure_reference(const Spec& spec, int mreps, double budget) {
         if (!read_prepared(spec.path, soup, r)) return r;
         r.in_vertices = soup.points.size();
         r.in_tris = soup.triangles.size();
-        count_interior_valence(soup, r.interior, r.interior_off3, r.max_valence);
+        count_interior_valence(soup, r);
         // optimizeVertexCacheStrip is quadratic in a vertex's valence (a 100K-triangle cone: 16 s,
         // so about 25 minutes at 1M): past this valence meshoptimizer is left out, and said so.
         if (r.max_valence > kMeshoptMaxValence) {

@@ -116,6 +116,13 @@ double floor_idx(const Reference& r) {
     return r.status == 0 ? 1.0 + 0.5 * double(r.interior_off3) / double(r.in_tris) : NAN;
 }
 
+/// Extra triangles (percent) that any single strip of the mesh needs: each ear and each two-face
+/// spike costs a split, and the strip's two ends spare at most four (count_ears()).
+double ears_bound(const Reference& r) {
+    const double need = 2.0 * double(r.ears + r.spikes) - 8.0;
+    return r.status == 0 && r.in_tris > 0 && need > 0 ? 100.0 * need / double(r.in_tris) : 0;
+}
+
 double meshopt_idx(const Reference& r) {
     return r.status == 0 && !r.meshopt_skipped ? double(r.m_restart_indices) / double(r.in_tris) : NAN;
 }
@@ -156,7 +163,9 @@ void write_csv(const std::string& path, const std::vector<Row>& rows) {
     std::ofstream o(path);
     o << "family,name,nominal,engine,status,message,reps,file_bytes,in_vertices,in_tris,out_tris,extra_pct,splits,"
          "swaps,loops,indices,indices_per_tri,interior_vertices,interior_valence_not_3k,floor_indices_per_tri,"
-         "gap_to_floor,fundamental,deferred,detours,genus,boundary_loops,decode_ok,verified,verify_message,t_bytes_s,"
+         "gap_to_floor,ears,spikes,ears_bound_extra_pct,fundamental,deferred,detours,genus,boundary_loops,decode_ok,verified,verify_"
+         "message,t_"
+         "bytes_s,"
          "t_read_s,t_check_s,t_adjacency_s,t_strip_s,t_encode_s,t_write_s,t_read_to_write_s,peak_kb,"
          "peak_bytes_per_tri,meshopt_vcache_s,meshopt_restart_s,meshopt_restart_indices,meshopt_restart_strips,"
          "meshopt_degen_s,meshopt_degen_indices,meshopt_degen_strips,wall_s\n";
@@ -175,12 +184,13 @@ void write_csv(const std::string& path, const std::vector<Row>& rows) {
             o << row.spec.family << ',' << row.spec.name << ',' << row.spec.nominal << ',' << ename(e) << ',' << r.status << ','
               << q(r.message) << ',' << r.reps << ',' << f.file_bytes << ',' << r.in_vertices << ',' << r.in_tris << ',' << r.out_tris
               << ',' << extra(r) << ',' << r.splits << ',' << r.swaps << ',' << r.loops << ',' << r.indices << ',' << idx_per_tri(r) << ','
-              << f.interior << ',' << f.interior_off3 << ',' << floor_idx(f) << ',' << idx_per_tri(r) - floor_idx(f) << ',' << r.fundamental
-              << ',' << r.deferred << ',' << r.detours << ',' << r.genus << ',' << r.boundary_loops << ',' << r.decode_ok << ','
-              << r.verified << ',' << q(r.verify_message) << ',' << f.t_bytes << ',' << r.t_read << ',' << r.t_check << ',' << r.t_adj
-              << ',' << r.t_build << ',' << r.t_encode << ',' << r.t_write << ',' << r.t_total << ',' << r.peak_kb << ','
-              << (tri > 0 ? r.peak_kb * 1024.0 / tri : NAN) << ',' << f.m_vcache << ',' << f.m_restart << ',' << f.m_restart_indices << ','
-              << f.m_restart_strips << ',' << f.m_degen << ',' << f.m_degen_indices << ',' << f.m_degen_strips << ',' << r.wall << '\n';
+              << f.interior << ',' << f.interior_off3 << ',' << floor_idx(f) << ',' << idx_per_tri(r) - floor_idx(f) << ',' << f.ears << ','
+              << f.spikes << ',' << ears_bound(f) << ',' << r.fundamental << ',' << r.deferred << ',' << r.detours << ',' << r.genus << ','
+              << r.boundary_loops << ',' << r.decode_ok << ',' << r.verified << ',' << q(r.verify_message) << ',' << f.t_bytes << ','
+              << r.t_read << ',' << r.t_check << ',' << r.t_adj << ',' << r.t_build << ',' << r.t_encode << ',' << r.t_write << ','
+              << r.t_total << ',' << r.peak_kb << ',' << (tri > 0 ? r.peak_kb * 1024.0 / tri : NAN) << ',' << f.m_vcache << ','
+              << f.m_restart << ',' << f.m_restart_indices << ',' << f.m_restart_strips << ',' << f.m_degen << ',' << f.m_degen_indices
+              << ',' << f.m_degen_strips << ',' << r.wall << '\n';
         }
     }
 }
@@ -414,16 +424,23 @@ std::string targets(const std::vector<Row>& rows, const Settings& cfg) {
     }
     // Awkward families: every size.
     {
-        std::map<std::string, std::pair<double, std::string>> worst;
+        struct Worst {
+            double extra = 0, bound = 0;  ///< bound: the ears' lower bound of the same mesh
+            std::string name;
+        };
+        std::map<std::string, Worst> worst;
         for (const Row& row : rows) {
             if (row.spec.kind != Kind::Awkward) continue;
             const double x = row.eng[0].status == 0 ? extra(row.eng[0]) : INFINITY;
             auto& w = worst[row.spec.family];
-            if (w.second.empty() || x > w.first) w = {x, row.spec.name};
+            if (w.name.empty() || x > w.extra) w = {x, ears_bound(row.ref), row.spec.name};
         }
-        for (const auto& [fam, w] : worst)
-            o << "| extra triangles ≤ 10% on every awkward family, " << fam << " (15) | worst " << pct2(w.first) << " (" << w.second
-              << ") | 10% | " << pass_miss(w.first <= 10) << " |\n";
+        for (const auto& [fam, w] : worst) {
+            o << "| extra triangles ≤ 10% on every awkward family, " << fam << " (15) | worst " << pct2(w.extra) << " (" << w.name;
+            if (w.bound > 10)
+                o << "; no single strip needs fewer than " << pct2(w.bound) << ": each ear and each two-face spike needs a split";
+            o << ") | 10% | " << pass_miss(w.extra <= 10) << " |\n";
+        }
     }
     {
         const std::vector<double> x = constraint_extras(rows, 0), g = constraint_extras(rows, 1);
