@@ -80,7 +80,30 @@ bool MatchingBuilder::flip_alternating(FaceId f1, bool one_end) {
     if (one_end && close_face < f1) return false;
     const StructId close_root = find(sid_[close_face]);
     if (close_root == find(sid_[f1])) return false;  // cheap filter: rarely joins loops
-    HalfedgeId path[2 * kMaxLoops];                  // crossed edge, then matched edge, in turn
+    // The last face before close_face is one of its crossed neighbours: the last depth is only
+    // entered there.
+    FaceId last[2] = {kNone, kNone};
+    for (uint32_t k = 0, n = 0; k < 3; ++k)
+        if (const HalfedgeId h = Mesh::halfedge(close_face, k); used_[h]) last[n++ & 1] = across(h);
+    // Faces from which the depth before the last can still close: a face of last[], or a crossed
+    // neighbour of a face matched to one.
+    FaceId before_last[6] = {last[0], last[1], kNone, kNone, kNone, kNone};
+    for (uint32_t i = 0, n = 2; i < 2; ++i) {
+        if (last[i] == kNone) continue;
+        HalfedgeId m = kNone;
+        for (HalfedgeId e : sides(last[i]))
+            if (matched_[e]) m = e;
+        if (m == kNone) continue;
+        const FaceId g = across(m);
+        for (HalfedgeId e : sides(g))
+            if (used_[e] && n < 6) before_last[n++] = across(e);
+    }
+    auto may_close = [&](FaceId next, uint32_t next_depth) {
+        if (next_depth + 1 == kMaxLoops) return next == last[0] || next == last[1];
+        if (next_depth + 2 == kMaxLoops) return std::find(std::begin(before_last), std::end(before_last), next) != std::end(before_last);
+        return true;
+    };
+    HalfedgeId path[2 * kMaxLoops];  // crossed edge, then matched edge, in turn
     StructId roots[kMaxLoops];
     bool repeated = false;  // a loop met twice, at the crossed edges of depths rep_p and rep_q
     uint32_t rep_p = 0, rep_q = 0;
@@ -131,7 +154,8 @@ bool MatchingBuilder::flip_alternating(FaceId f1, bool one_end) {
                 for (uint32_t i = 1; i <= depth; ++i) uf_[find(roots[i])] = find(roots[0]);
                 found = true;
             } else if (depth + 1 < kMaxLoops && g != close_face) {
-                found = self(self, across(m), depth + 1);
+                const FaceId next = across(m);
+                if (may_close(next, depth + 1)) found = self(self, next, depth + 1);
             }
         }
         if (repeat) repeated = false;
