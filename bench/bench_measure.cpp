@@ -99,30 +99,92 @@ bool same_oriented(const ss::Triangle& a, const ss::Triangle& b) {
     return false;
 }
 
-/// Ears (faces with a single interior edge) and spikes (ears whose neighbour has only two).
-/// Each ear needs a split of its edge; a spike is entered and left through its neighbour's other
-/// edge alone, which needs a split too. A strip's two ends spare at most four of these splits, so
-/// every single strip has at least 2·(ears + spikes) − 8 extra triangles (docs/algorithm.md, step 3).
-void count_ears(const ss::TriangleSoup& s, const std::vector<uint64_t>& sorted_edges, uint64_t& ears, uint64_t& spikes) {
-    auto key = [](const ss::Triangle& t, int k) { return uint64_t{t[k]} << 32 | t[(k + 1) % 3]; };
-    auto twin = [](uint64_t x) { return (x & 0xffffffffu) << 32 | x >> 32; };
-    auto inner = [&](const ss::Triangle& t) {
-        int n = 0;
-        for (int k = 0; k < 3; ++k) n += std::binary_search(sorted_edges.begin(), sorted_edges.end(), twin(key(t, k)));
-        return n;
+/// Bridges of the dual graph (interior edges whose removal disconnects the faces) and the most of
+/// them that one path of faces crosses (the diameter of the tree of 2-edge-connected pieces). A
+/// strip crosses an edge at most once unless it is split, and it must enter and leave the far
+/// side of every bridge that does not separate its two ends: any single strip splits at least
+/// bridges − diameter of them, +2 triangles each (docs/algorithm.md, step 3). An ear's edge is
+/// such a bridge. Meshes over 4M faces are skipped (diameter = bridges = 0).
+void count_dual_bridges(const ss::TriangleSoup& s, uint64_t& bridges, uint64_t& diameter) {
+    bridges = diameter = 0;
+    const size_t nf = s.triangles.size();
+    if (nf == 0 || nf > 4000000) return;
+    constexpr uint32_t kNo = UINT32_MAX;
+    auto key = [&](uint32_t c) {
+        const ss::Triangle& t = s.triangles[c / 3];
+        return uint64_t{t[c % 3]} << 32 | t[(c % 3 + 1) % 3];
     };
-    std::vector<uint64_t> into_ears;  // the neighbours' half-edges into each ear
-    for (const ss::Triangle& t : s.triangles) {
-        if (inner(t) != 1) continue;
-        for (int k = 0; k < 3; ++k)
-            if (std::binary_search(sorted_edges.begin(), sorted_edges.end(), twin(key(t, k)))) into_ears.push_back(twin(key(t, k)));
+    std::vector<uint32_t> by_key(3 * nf), twin(3 * nf, kNo);
+    std::iota(by_key.begin(), by_key.end(), 0u);
+    std::sort(by_key.begin(), by_key.end(), [&](uint32_t a, uint32_t b) { return key(a) < key(b); });
+    for (uint32_t c = 0; c < 3 * nf; ++c) {
+        const uint64_t k = key(c), want = (k & 0xffffffffu) << 32 | k >> 32;
+        const auto it = std::lower_bound(by_key.begin(), by_key.end(), want, [&](uint32_t x, uint64_t w) { return key(x) < w; });
+        if (it != by_key.end() && key(*it) == want) twin[c] = *it;
     }
-    std::sort(into_ears.begin(), into_ears.end());
-    ears = into_ears.size();
-    spikes = 0;
-    for (const ss::Triangle& t : s.triangles)
-        for (int k = 0; k < 3; ++k)
-            if (std::binary_search(into_ears.begin(), into_ears.end(), key(t, k)) && inner(t) == 2) ++spikes;
+    by_key = {};
+    // Tarjan's lowpoints, iteratively; the entry corner of each face is not walked back.
+    std::vector<uint32_t> disc(nf, 0), low(nf, 0), entry(nf, kNo);
+    std::vector<uint8_t> bridge(3 * nf, 0);
+    std::vector<std::pair<uint32_t, uint32_t>> stack;  // (face, next side)
+    uint32_t timer = 0;
+    for (uint32_t r = 0; r < nf; ++r) {
+        if (disc[r]) continue;
+        disc[r] = low[r] = ++timer;
+        stack.assign(1, {r, 0});
+        while (!stack.empty()) {
+            auto& [f, k] = stack.back();
+            if (k == 3) {
+                const uint32_t done = f;
+                stack.pop_back();
+                if (stack.empty()) break;
+                const uint32_t p = stack.back().first;
+                low[p] = std::min(low[p], low[done]);
+                if (low[done] > disc[p]) bridge[entry[done]] = bridge[twin[entry[done]]] = 1;
+                continue;
+            }
+            const uint32_t c = 3 * f + k++;
+            if (twin[c] == kNo || c == entry[f]) continue;
+            const uint32_t g = twin[c] / 3;
+            if (disc[g]) {
+                low[f] = std::min(low[f], disc[g]);
+            } else {
+                disc[g] = low[g] = ++timer;
+                entry[g] = twin[c];
+                stack.push_back({g, 0});
+            }
+        }
+    }
+    disc = {}, low = {}, entry = {};
+    // Pieces joined by non-bridge edges; then the tree of pieces and its diameter (two searches).
+    std::vector<uint32_t> piece(nf, kNo), queue;
+    uint32_t pieces = 0;
+    for (uint32_t r = 0; r < nf; ++r) {
+        if (piece[r] != kNo) continue;
+        piece[r] = pieces;
+        queue.assign(1, r);
+        for (size_t h = 0; h < queue.size(); ++h)
+            for (uint32_t c = 3 * queue[h]; c < 3 * queue[h] + 3; ++c)
+                if (twin[c] != kNo && !bridge[c] && piece[twin[c] / 3] == kNo) piece[twin[c] / 3] = pieces, queue.push_back(twin[c] / 3);
+        ++pieces;
+    }
+    std::vector<std::vector<uint32_t>> tree(pieces);
+    for (uint32_t c = 0; c < 3 * nf; ++c)
+        if (bridge[c]) ++bridges, tree[piece[c / 3]].push_back(piece[twin[c] / 3]);
+    bridges /= 2;
+    auto farthest = [&](uint32_t from, uint64_t& dist) {
+        std::vector<uint32_t> d(pieces, kNo);
+        d[from] = 0;
+        queue.assign(1, from);
+        uint32_t last = from;
+        for (size_t h = 0; h < queue.size(); ++h)
+            for (uint32_t q : tree[last = queue[h]])
+                if (d[q] == kNo) d[q] = d[queue[h]] + 1, queue.push_back(q);
+        dist = d[last];
+        return last;
+    };
+    uint64_t ignored = 0;
+    (void)farthest(farthest(0, ignored), diameter);
 }
 
 /// Interior vertices and those whose valence is not a multiple of 3. Each such vertex forces
@@ -142,7 +204,7 @@ void count_interior_valence(const ss::TriangleSoup& s, Reference& r) {
         const uint64_t twin = (x & 0xffffffffu) << 32 | x >> 32;
         if (!std::binary_search(e.begin(), e.end(), twin)) boundary[x >> 32] = boundary[x & 0xffffffffu] = 1;
     }
-    count_ears(s, e, r.ears, r.spikes);
+    count_dual_bridges(s, r.bridges, r.bridge_path);
     r.interior = r.interior_off3 = 0;
     r.max_valence = deg.empty() ? 0 : *std::max_element(deg.begin(), deg.end());
     for (size_t v = 0; v < deg.size(); ++v) {

@@ -80,8 +80,8 @@ struct Reference {
     int status = -1;
     char message[384] = {};
     uint64_t file_bytes = 0, in_vertices = 0, in_tris = 0, interior = 0, interior_off3 = 0;
-    uint64_t ears = 0, spikes = 0;  ///< faces with one interior edge; those whose neighbour has two
-    double t_bytes = NAN;           ///< reading the file's bytes into memory (page cache warm)
+    uint64_t bridges = 0, bridge_path = 0;  ///< of the dual graph; the most one path crosses (count_dual_bridges)
+    double t_bytes = NAN;                   ///< reading the file's bytes into memory (page cache warm)
     double m_vcache = NAN, m_restart = NAN, m_degen = NAN;
     uint64_t m_restart_indices = 0, m_restart_strips = 0, m_degen_indices = 0, m_degen_strips = 0;
     uint64_t max_valence = 0;

@@ -507,6 +507,17 @@ TEST(AwkwardGenerators, EaredGrid) {
         }
 }
 
+TEST(AwkwardGenerators, SpikedComb) {
+    for (uint32_t teeth : {1u, 2u, 7u, 40u})
+        for (uint32_t height : {1u, 5u}) {
+            const TriangleSoup s = make_spiked_comb(teeth, height);
+            const std::string what = "spiked comb " + std::to_string(teeth) + " x " + std::to_string(height);
+            check_topology(s, {2 * (2LL * teeth + 1) + teeth * (2LL * height + 1), teeth * (2LL * height + 5), 1, 1, 0}, what);
+            EXPECT_GT(min_signed_area2(s), 0) << what;
+            EXPECT_EQ(ears_next_to_two_edge_faces(s), teeth + 1) << what;  // and the base's last cell
+        }
+}
+
 TEST(AwkwardGenerators, Cones) {
     for (uint32_t k : {3u, 4u, 5u, 17u, 1000u, 10000u}) {
         const std::string what = "cone " + std::to_string(k);

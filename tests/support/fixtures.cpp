@@ -491,6 +491,34 @@ TriangleSoup make_eared_grid(uint32_t nx, uint32_t ny) {
     return s;
 }
 
+TriangleSoup make_spiked_comb(uint32_t teeth, uint32_t height) {
+    require(teeth >= 1 && height >= 1, "spiked comb needs teeth, height >= 1");
+    TriangleSoup s;
+    const uint32_t w = 2 * teeth + 1;  // base vertices per row
+    for (uint32_t y = 0; y < 2; ++y)
+        for (uint32_t x = 0; x < w; ++x) s.points.push_back({double(x), double(y), 0.0});
+    auto cell = [&](uint32_t a, uint32_t b, uint32_t c, uint32_t d) {  // a b c d counter-clockwise
+        s.triangles.push_back({a, b, c});
+        s.triangles.push_back({a, c, d});
+    };
+    for (uint32_t x = 0; x + 1 < w; ++x) cell(x, x + 1, w + x + 1, w + x);
+    for (uint32_t t = 0; t < teeth; ++t) {
+        const uint32_t x = 2 * t;
+        uint32_t left = w + x, right = w + x + 1;  // the tooth's bottom edge, on the base's top
+        for (uint32_t y = 2; y <= height + 1; ++y) {
+            const auto l = static_cast<uint32_t>(s.points.size());
+            s.points.push_back({double(x), double(y), 0.0});
+            s.points.push_back({double(x + 1), double(y), 0.0});
+            cell(left, right, l + 1, l);
+            left = l, right = l + 1;
+        }
+        const auto tip = static_cast<uint32_t>(s.points.size());
+        s.points.push_back({x + 0.5, height + 1.5, 0.0});
+        s.triangles.push_back({left, right, tip});
+    }
+    return s;
+}
+
 TriangleSoup make_cone(uint32_t k, bool capped) {
     require(k >= 3, "cone needs k >= 3");
     TriangleSoup s;
@@ -522,6 +550,8 @@ const char* awkward_family_name(AwkwardFamily family) noexcept {
             return "open_cone";
         case AwkwardFamily::ClosedCone:
             return "closed_cone";
+        case AwkwardFamily::SpikedComb:
+            return "spiked_comb";
     }
     return "unknown";
 }
@@ -558,6 +588,8 @@ WalledMesh make_awkward(AwkwardFamily family, uint32_t triangles) {
             return {make_cone(std::max(3u, rounded(f)), false), {}};
         case AwkwardFamily::ClosedCone:
             return {make_cone(std::max(3u, rounded(f / 4)), true), {}};  // F ~ 4k
+        case AwkwardFamily::SpikedComb:
+            return {make_spiked_comb(std::max(1u, rounded(f / 15)), 5), {}};  // F = 15 teeth
     }
     throw RequestError("generator: unknown awkward family");
 }

@@ -148,6 +148,14 @@ TriangleSoup make_disk_many_holes(uint32_t bx, uint32_t by);
 /// V=(nx+1)(ny+1) + 4nx, F=2 nx ny + 4nx, chi=1, b=1, g=0.
 TriangleSoup make_eared_grid(uint32_t nx, uint32_t ny);
 
+/// Dead ends: a base row of 2·teeth unit cells with a tooth `height` cells tall on every other
+/// cell (columns 0, 2, 4, ...) and an ear on each tooth's top edge. Every tooth is a chain of
+/// 2·height + 1 faces hanging from the base by one edge, so each of its 2·height + 1 edges is a
+/// bridge of the dual graph (the base's last cell, with no tooth, ends in one more ear). Planar
+/// and CCW. \pre teeth, height >= 1.
+/// V=2(2 teeth+1) + teeth(2 height+1), F=teeth(2 height+5), chi=1, b=1, g=0.
+TriangleSoup make_spiked_comb(uint32_t teeth, uint32_t height);
+
 /// A cone whose apex (vertex 0, at z=1) has valence k: k side triangles to a ring of k vertices
 /// (1..k, unit circle, z=0). Open (capped=false): the ring is the boundary, the apex interior;
 /// V=k+1, F=k, chi=1, b=1. Capped: a flat disk facing down closes the ring: concentric rings of
@@ -166,13 +174,15 @@ enum class AwkwardFamily : uint8_t {
     Ears,             ///< make_eared_grid(nx, 4)
     OpenCone,         ///< make_cone(k, false)
     ClosedCone,       ///< make_cone(k, true), about 4k faces
+    SpikedComb,       ///< make_spiked_comb(teeth, 5)
 };
-inline constexpr AwkwardFamily kAwkwardFamilies[] = {AwkwardFamily::HoleCorridors,   AwkwardFamily::SlitCorridors, AwkwardFamily::SlitWalls,
-                                                     AwkwardFamily::SerpentineWalls, AwkwardFamily::ManyHoles,     AwkwardFamily::Ears,
-                                                     AwkwardFamily::OpenCone,        AwkwardFamily::ClosedCone};
+inline constexpr AwkwardFamily kAwkwardFamilies[] = {
+    AwkwardFamily::HoleCorridors,   AwkwardFamily::SlitCorridors, AwkwardFamily::SlitWalls,
+    AwkwardFamily::SerpentineWalls, AwkwardFamily::ManyHoles,     AwkwardFamily::Ears,
+    AwkwardFamily::OpenCone,        AwkwardFamily::ClosedCone,    AwkwardFamily::SpikedComb};
 
 /// "hole_corridors", "slit_corridors", "slit_walls", "serpentine_walls", "many_holes", "ears",
-/// "open_cone", "closed_cone".
+/// "open_cone", "closed_cone", "spiked_comb".
 const char* awkward_family_name(AwkwardFamily family) noexcept;
 
 /// The family at about `triangles` faces (grids kept roughly square, except the eared grid,
