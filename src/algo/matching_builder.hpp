@@ -205,6 +205,7 @@ private:
     void join(HalfedgeId h, StructId a, StructId b, bool cycle, bool pinned);
     void rotate_into(HalfedgeId h, StructId a, StructId b);
     void merge_by_split(HalfedgeId h, StructId a, StructId b);
+    [[nodiscard]] uint32_t num_structures();
     bool single_strip_ready();
     std::vector<uint32_t> walk() const;
     StripResult finish(std::vector<uint32_t> order);

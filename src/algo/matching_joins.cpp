@@ -273,11 +273,16 @@ void MatchingBuilder::merge_by_cost() {
 
 // Free joins first (path ends, path ends into loops), then splits (cheapest first), then any
 // join left (the pass that guarantees one strip), then free joins again.
+// With one structure left only a path's own ends pass the test below (closing it), so a pass
+// looks at them alone, and no split join is left to rank: same joins, without three scans of
+// every edge (the 1M sphere after the path growth took all its loops in).
 void MatchingBuilder::merge_all() {
     for (bool allow_split : {false, true, false}) {
-        if (allow_split) merge_by_cost();
+        const bool one = num_structures() == 1;
+        if (allow_split && !one) merge_by_cost();
         for (uint32_t fi = 0; fi < mesh_.num_faces(); ++fi) {  // a join may split: faces are added
             const FaceId f(fi);
+            if (one && hdeg(f) == 2) continue;
             for (uint32_t k = 0; k < 3;) {
                 const HalfedgeId h = Mesh::halfedge(f, k);
                 const bool skip =
@@ -286,6 +291,12 @@ void MatchingBuilder::merge_all() {
             }
         }
     }
+}
+
+uint32_t MatchingBuilder::num_structures() {
+    uint32_t roots = 0;
+    for (StructId s : IdRange<StructId>(static_cast<uint32_t>(uf_.size()))) roots += find(s) == s;
+    return roots;
 }
 
 bool MatchingBuilder::single_strip_ready() {
