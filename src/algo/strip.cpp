@@ -8,6 +8,7 @@
 #include <string>
 #include <utility>
 
+#include "core/topology.hpp"
 #include "growth_builder.hpp"
 #include "singlestrip/errors.hpp"
 
@@ -48,7 +49,7 @@ void Builder::prepare() {
         if (!passable(h)) rim_[mesh_.from(h)] = rim_[mesh_.to(h)] = 1;
     stats_.input_triangles = mesh_.num_faces();
     stats_.boundary_loops = mesh_.num_boundary_loops();
-    stats_.genus = mesh_.genus();
+    stats_.genus = genus_from_euler(mesh_.euler_characteristic(), stats_.boundary_loops, 1);  // loops counted once
     source_ = opt_.source.value_or(kNone);
     target_ = opt_.target.value_or(kNone);
     const RegionId r0 = new_region(mesh_.num_faces());

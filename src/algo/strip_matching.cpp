@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "core/gentle_growth.hpp"
+#include "core/topology.hpp"
 #include "matching_builder.hpp"
 #include "singlestrip/errors.hpp"
 #include "singlestrip/strip.hpp"
@@ -498,7 +499,7 @@ StripResult MatchingBuilder::run() {
     blocked_ = constraint_halfedges(mesh_, opt_);
     stats_.input_triangles = nf;
     stats_.boundary_loops = mesh_.num_boundary_loops();
-    stats_.genus = mesh_.genus();
+    stats_.genus = genus_from_euler(mesh_.euler_characteristic(), stats_.boundary_loops, 1);  // loops counted once
     stats_.engine = StripEngine::Matching;
     matched_.assign(mesh_.num_halfedges(), 0);
     used_.assign(mesh_.num_halfedges(), 0);
