@@ -108,7 +108,7 @@ MatchingBuilder::Search MatchingBuilder::blossom_search(FaceId root, size_t budg
     bl_queue_.push_back(root);
     bool exact = true;
     for (size_t head = 0; head < bl_queue_.size(); ++head) {
-        if (bl_touched_.size() > budget) return Search::Unknown;
+        if (bl_touched_.size() > budget) return exact ? Search::Exhausted : Search::Unknown;
         const FaceId v = bl_queue_[head];
         for (HalfedgeId h : sides(v)) {
             if (!passable(h) || matched_[h]) continue;

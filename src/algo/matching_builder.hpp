@@ -120,7 +120,9 @@ private:
     [[nodiscard]] long pattern_cost(const Pattern& p) const;
     bool augment_from(FaceId u, IdVector<FaceId, uint32_t>& stamp, uint32_t mark, size_t budget);
     // Augmenting path from one short face through blossoms (matching_blossom.cpp).
-    enum class Search { Found, NoPath, Unknown };
+    /// Exhausted: the budget ran out (no path among the faces reached); Unknown: the search met
+    /// faces its graph does not model (pinned faces wanting two matched edges).
+    enum class Search { Found, NoPath, Unknown, Exhausted };
     Search blossom_search(FaceId root, size_t budget);
     void release_work_arrays() noexcept;
     /// Gives blossom_search()'s per-face arrays back (the next search makes them again).

@@ -205,11 +205,12 @@ void MatchingBuilder::repair_short(std::vector<FaceId>& short_faces) {
     // unbounded, matched in 1.4 s).
     // (An augmenting path never ends at a hopeless face: reversed, it would start there.)
     const size_t budget = std::max<size_t>(16 * size_t{nf} / std::max<size_t>(1, short_faces.size()), 1024);
-    std::vector<FaceId> hopeless;
+    std::vector<FaceId> hopeless, exhausted;
     std::erase_if(short_faces, [&](FaceId f) {
         if (quota_[f] == 0) return true;
         const Search r = in_blossom_graph(f) ? blossom_search(f, budget) : Search::Unknown;
         if (r == Search::NoPath) hopeless.push_back(f);
+        if (r == Search::Exhausted) exhausted.push_back(f);
         return r != Search::Unknown;
     });
     std::erase_if(short_faces, [&](FaceId f) { return quota_[f] == 0; });
@@ -217,8 +218,16 @@ void MatchingBuilder::repair_short(std::vector<FaceId>& short_faces) {
     // Edmonds on balls: each face's own, then one search over the union of larger balls (it
     // costs O(ball) per augmenting path).
     // Larger balls only for few faces: many faces still short are structural (no 2-factor).
+    // A face whose exact search reached more faces than a 512-face ball holds skips that ball
+    // (a disk with a hole every 200 faces: 3,408 balls, none found a path, a third of the stage).
     for (size_t ball : {size_t{512}, kBallOneByOne, size_t{32768}}) {
+        if (ball > 512) {
+            std::erase_if(exhausted, [&](FaceId f) { return quota_[f] == 0; });
+            short_faces.insert(short_faces.end(), exhausted.begin(), exhausted.end());
+            exhausted.clear();
+        }
         const size_t most = ball == 512 ? SIZE_MAX : ball == kBallOneByOne ? 64 : 16;
+        if (ball == 512 && short_faces.empty()) continue;
         if (short_faces.empty() || short_faces.size() > most) break;
         if (ball > kBallOneByOne) {  // a long plain search first: far cheaper than Edmonds on the union
             if (stamp.empty()) plain_arrays(true);
@@ -228,9 +237,10 @@ void MatchingBuilder::repair_short(std::vector<FaceId>& short_faces) {
             std::erase_if(short_faces, [&](FaceId f) { return quota_[f] == 0; });
             if (short_faces.empty()) break;
         }
-        if (!repair_in_balls(short_faces, ball)) break;
+        if (!repair_in_balls(short_faces, ball) && exhausted.empty()) break;
     }
     plain_arrays(false);
+    short_faces.insert(short_faces.end(), exhausted.begin(), exhausted.end());
     short_faces.insert(short_faces.end(), hopeless.begin(), hopeless.end());
 }
 
