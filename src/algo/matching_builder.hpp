@@ -213,6 +213,8 @@ private:
     StripResult finish(std::vector<uint32_t> order);
     StripResult finish_or_grow(std::vector<uint32_t> order);
     StripResult grow(Mesh mesh, uint32_t splits) const;
+    std::pair<StripResult, StripResult> grow_two(Mesh a, uint32_t splits_a, Mesh b, uint32_t splits_b) const;
+    static constexpr uint32_t kParallelGrowMax = 4u << 20;  ///< faces up to which grow_two() uses two threads
     void keep_better(StripResult& r, StripResult alt) const;
     StripResult as_fallback(StripResult r) const;
     StripResult fallback();

@@ -444,14 +444,49 @@ Mesh MatchingBuilder::pre_merge_mesh(const Mesh& original) const {
 
 // Not one strip (paths whose ends never touch): the growth builder, which always ends in one
 // strip, finishes on the mesh as split so far.
+// Two growth runs, on two threads when the mesh is large enough to gain and small enough that
+// two builders at once (about 60 bytes a face each) stay far from issue 17's memory bound.
+std::pair<StripResult, StripResult> MatchingBuilder::grow_two(Mesh a, uint32_t splits_a, Mesh b, uint32_t splits_b) const {
+    const uint32_t nf = std::max(a.num_faces(), b.num_faces());
+    if (nf < kParallelPattern || nf > kParallelGrowMax) {
+        StripResult ra = grow(std::move(a), splits_a);
+        return {std::move(ra), grow(std::move(b), splits_b)};
+    }
+    StripResult ra;
+    std::exception_ptr failure;
+    std::thread other([&] {
+        try {
+            ra = grow(std::move(a), splits_a);
+        } catch (...) {
+            failure = std::current_exception();
+        }
+    });
+    StripResult rb;
+    try {
+        rb = grow(std::move(b), splits_b);
+    } catch (...) {
+        other.join();
+        throw;
+    }
+    other.join();
+    if (failure) std::rethrow_exception(failure);
+    return {std::move(ra), std::move(rb)};
+}
+
 StripResult MatchingBuilder::fallback() {
     // The input mesh is a candidate too: the engine's splits (ears, bridges, parity) can cost the
     // growth builder more than they save (boeing.off's small parts: +90% against +26%).
     Mesh original = input_mesh();  // before mesh_ is handed over
     release_work_arrays();
     StripResult r;
-    keep_better(r, grow(std::move(mesh_), stats_.splits));
-    if (pre_merge_) keep_better(r, grow(pre_merge_mesh(original), pre_merge_splits_));  // without the joins' splits
+    if (pre_merge_) {                            // the mesh as split so far, and without the joins' splits
+        Mesh before = pre_merge_mesh(original);  // built before mesh_ is moved (arguments have no order)
+        auto [split, before_joins] = grow_two(std::move(mesh_), stats_.splits, std::move(before), pre_merge_splits_);
+        keep_better(r, std::move(split));
+        keep_better(r, std::move(before_joins));
+    } else {
+        keep_better(r, grow(std::move(mesh_), stats_.splits));
+    }
     keep_better(r, grow(Mesh(original), 0));
     if (r.order.empty()) {  // the growth builder's own case, with its own errors
         StripOptions o = opt_;
@@ -472,8 +507,14 @@ StripResult MatchingBuilder::finish_or_grow(std::vector<uint32_t> order) {
     StripResult r = finish(std::move(order));
     release_work_arrays();
     StripResult g;
-    if (chain_splits_ && pre_merge_) keep_better(g, grow(pre_merge_mesh(original), pre_merge_splits_));
-    keep_better(g, grow(std::move(original), 0));
+    if (chain_splits_ && pre_merge_) {
+        Mesh before = pre_merge_mesh(original);  // built before original is moved (arguments have no order)
+        auto [before_chains, plain] = grow_two(std::move(before), pre_merge_splits_, std::move(original), 0);
+        keep_better(g, std::move(before_chains));
+        keep_better(g, std::move(plain));
+    } else {
+        keep_better(g, grow(std::move(original), 0));
+    }
     if (g.order.empty()) return r;
     return cost(g) < cost(r) ? as_fallback(std::move(g)) : r;
 }
