@@ -162,10 +162,8 @@ void write_csv(const std::string& path, const std::vector<Row>& rows) {
     std::ofstream o(path);
     o << "family,name,nominal,engine,status,message,reps,file_bytes,in_vertices,in_tris,out_tris,extra_pct,splits,"
          "swaps,loops,indices,indices_per_tri,interior_vertices,interior_valence_not_3k,floor_indices_per_tri,"
-         "gap_to_floor,dual_bridges,bridges_on_one_path,split_bound_extra_pct,fundamental,deferred,detours,genus,boundary_loops,decode_ok,"
-         "verified,verify_"
-         "message,t_"
-         "bytes_s,"
+         "gap_to_floor,dual_bridges,bridges_on_one_path,split_bound_extra_pct,fundamental,deferred,detours,genus,"
+         "boundary_loops,decode_ok,verified,verify_message,t_bytes_s,"
          "t_read_s,t_check_s,t_adjacency_s,t_strip_s,t_encode_s,t_write_s,t_read_to_write_s,peak_kb,"
          "peak_bytes_per_tri,meshopt_vcache_s,meshopt_restart_s,meshopt_restart_indices,meshopt_restart_strips,"
          "meshopt_degen_s,meshopt_degen_indices,meshopt_degen_strips,wall_s\n";

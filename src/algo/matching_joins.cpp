@@ -300,12 +300,8 @@ uint32_t MatchingBuilder::num_structures() {
 }
 
 bool MatchingBuilder::single_strip_ready() {
-    uint32_t roots = 0;
-    StructId root = kNone;
-    for (StructId s : IdRange<StructId>(static_cast<uint32_t>(uf_.size())))
-        if (find(s) == s) ++roots, root = s;
-    if (roots != 1) return false;
-    return num_pins_ != 2 || cycle_[root];
+    if (num_structures() != 1) return false;
+    return num_pins_ != 2 || cycle_[find(StructId(0))];  // one structure: every id leads to its root
 }
 
 }  // namespace singlestrip::matching

@@ -457,8 +457,6 @@ Mesh MatchingBuilder::pre_merge_mesh(const Mesh& original) const {
     return pre;
 }
 
-// Not one strip (paths whose ends never touch): the growth builder, which always ends in one
-// strip, finishes on the mesh as split so far.
 // Two growth runs, on two threads when the mesh is large enough to gain and small enough that
 // two builders at once (about 60 bytes a face each) stay far from issue 17's memory bound.
 std::pair<StripResult, StripResult> MatchingBuilder::grow_two(Mesh a, uint32_t splits_a, Mesh b, uint32_t splits_b) const {
@@ -488,6 +486,8 @@ std::pair<StripResult, StripResult> MatchingBuilder::grow_two(Mesh a, uint32_t s
     return {std::move(ra), std::move(rb)};
 }
 
+// Not one strip (paths whose ends never touch): the growth builder, which always ends in one
+// strip, finishes on the mesh as split so far.
 StripResult MatchingBuilder::fallback() {
     // The input mesh is a candidate too: the engine's splits (ears, bridges, parity) can cost the
     // growth builder more than they save (boeing.off's small parts: +90% against +26%).
