@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <initializer_list>
+#include <optional>
 #include <vector>
 
 #include "matching_builder.hpp"
@@ -33,7 +34,7 @@ int MatchingBuilder::swaps_around(std::initializer_list<FaceId> faces) const {
 
 class PathGrower {
 public:
-    PathGrower(MatchingBuilder& b, uint32_t loops) : b_(b), path_(b.mesh_.num_faces()), loops_(loops) {}
+    PathGrower(MatchingBuilder& b, uint32_t loops) : b_(b), loops_(loops) {}
     void run(StructId path_root);
 
 private:
@@ -53,7 +54,9 @@ private:
     static constexpr uint64_t kWindow = 4096;  ///< rotations without a loop taken in, then stop
 
     MatchingBuilder& b_;
-    PathOrder path_;
+    // Built at the first rotation: until then the path only grows at its ends, and the ends are
+    // all a take needs (on closed meshes most loops go in that way, with no order kept at all).
+    std::optional<PathOrder> path_;
     uint32_t loops_;               ///< loops not yet in the path
     StructId root_;                ///< the path's structure
     FaceId ends_[2];               ///< front, back
@@ -64,7 +67,9 @@ private:
     [[nodiscard]] Take best_take(uint32_t side);
     void take(uint32_t side, const Take& t);
     void rotate(uint32_t side, HalfedgeId h);
-    void reverse(uint32_t side, uint32_t from) { side ? path_.reverse_back(from) : path_.reverse_front(from); }
+    void reverse(uint32_t side, uint32_t from) { side ? path_->reverse_back(from) : path_->reverse_front(from); }
+    PathOrder& order();
+    [[nodiscard]] std::vector<FaceId> path_from(FaceId end) const;
     void undo_trial();
     bool take_all();
 };
@@ -80,19 +85,10 @@ void PathGrower::start(StructId path_root) {
                 end = f;
                 break;
             }
-        std::vector<FaceId> seq{end};
-        for (FaceId prev = kNone, f = end;;) {
-            FaceId next = kNone;
-            for (HalfedgeId h : sides(f))
-                if (b_.used_[h] && b_.across(h) != prev) next = b_.across(h);
-            if (next == kNone) break;
-            seq.push_back(next);
-            prev = f, f = next;
-        }
         root_ = path_root;
-        path_.append(seq);
-        ends_[0] = seq.front();
-        ends_[1] = seq.back();
+        ends_[0] = end;
+        ends_[1] = end;
+        for (FaceId f : path_from(end)) ends_[1] = f;
         return;
     }
     HalfedgeId cut = kNone;
@@ -102,12 +98,34 @@ void PathGrower::start(StructId path_root) {
             break;
         }
     root_ = b_.find(b_.sid_[Mesh::face(cut)]);
-    (void)path_.append_from(b_.loop_from(cut));
     b_.set_pair(b_.used_, cut, 0);
     b_.cycle_[root_] = 0;
     ends_[0] = Mesh::face(cut);
     ends_[1] = b_.across(cut);
     --loops_;
+}
+
+// The faces of the path from `end` (a face with at most one crossed edge) along crossed edges.
+std::vector<FaceId> PathGrower::path_from(FaceId end) const {
+    std::vector<FaceId> seq{end};
+    for (HalfedgeId in = kNone;;) {
+        HalfedgeId out = kNone;
+        for (HalfedgeId h : sides(seq.back()))
+            if (b_.used_[h] && h != in) out = h;
+        if (out == kNone) return seq;
+        in = b_.mesh_.twin(out);
+        seq.push_back(Mesh::face(in));
+    }
+}
+
+// The path's order, walked from ends_[0] along the crossed edges the first time it is needed.
+PathOrder& PathGrower::order() {
+    if (!path_) {
+        path_.emplace(b_.mesh_.num_faces());
+        const std::vector<FaceId> seq = path_from(ends_[0]);
+        path_->append(seq);
+    }
+    return *path_;
 }
 
 // The cheapest way to take a loop in at ends_[side]: link into its face g, cut one of g's links.
@@ -134,7 +152,10 @@ PathGrower::Take PathGrower::best_take(uint32_t side) {
 
 void PathGrower::take(uint32_t side, const Take& t) {
     // The loop goes in as it is walked, before its crossed edges change.
-    ends_[side] = side ? path_.append_from(b_.loop_from(t.cut)) : path_.prepend_from(b_.loop_from(t.cut));
+    if (path_)
+        ends_[side] = side ? path_->append_from(b_.loop_from(t.cut)) : path_->prepend_from(b_.loop_from(t.cut));
+    else
+        ends_[side] = b_.across(t.cut);  // the loop is walked from cut's face round to this one
     b_.uf_[b_.find(b_.sid_[Mesh::face(t.cut)])] = root_;
     b_.set_pair(b_.used_, t.cut, 0);
     b_.set_pair(b_.used_, t.link, 1);
@@ -147,10 +168,11 @@ void PathGrower::take(uint32_t side, const Take& t) {
 // h: a free edge of ends_[side] into face x of the path.
 void PathGrower::rotate(uint32_t side, HalfedgeId h) {
     const FaceId e = ends_[side], x = b_.across(h);
-    const uint32_t px = path_.position(x), n = path_.size();
+    PathOrder& path = order();
+    const uint32_t px = path.position(x), n = path.size();
     if (side ? px + 2 >= n : px < 2) return;  // x is the end's own neighbour
     const uint32_t from = side ? px + 1 : px;
-    const FaceId y = path_.at(side ? px + 1 : px - 1);
+    const FaceId y = path.at(side ? px + 1 : px - 1);
     HalfedgeId xy = kNone;
     for (HalfedgeId k : sides(x))
         if (b_.used_[k] && b_.across(k) == y) xy = k;
