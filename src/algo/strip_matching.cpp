@@ -63,6 +63,9 @@ SplitResult MatchingBuilder::split(HalfedgeId h) {
     const VertexId pin_vertex[2] = {opt_.source.value_or(kNone), opt_.target.value_or(kNone)};
     for (const HalfedgeId c : {hn, tn})  // the two corners split_edge() moves to the midpoint
         if (Mesh::face(c).idx() < mesh_.num_input_faces()) overwritten_.emplace_back(c, mesh_.from(c));
+    // Room for ears, bridges and joins (a few percent; see the growth builder's prepare()),
+    // taken at the first split: a closed mesh often needs none, and the points would be copied.
+    if (split_log_.empty()) mesh_.reserve_splits(mesh_.num_input_faces() / 32 + 64);
     split_log_.push_back(h);
     const SplitResult sr = mesh_.split_edge(h);
     if (opt_.validate_each_split) mesh_.validate();
@@ -551,7 +554,6 @@ Mesh MatchingBuilder::input_mesh() const {
 StripResult MatchingBuilder::run() {
     const uint32_t nf = mesh_.num_faces();
     check_strip_request(mesh_, opt_);
-    mesh_.reserve_splits(nf / 32 + 64);  // ears, bridges and joins: a few percent (see the growth builder's prepare())
     blocked_ = constraint_halfedges(mesh_, opt_);
     stats_.input_triangles = nf;
     stats_.boundary_loops = mesh_.num_boundary_loops();
