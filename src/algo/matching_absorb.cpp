@@ -34,7 +34,7 @@ int MatchingBuilder::swaps_around(std::initializer_list<FaceId> faces) const {
 
 class PathGrower {
 public:
-    PathGrower(MatchingBuilder& b, uint32_t loops) : b_(b), loops_(loops) {}
+    PathGrower(MatchingBuilder& b, uint32_t loops) : b_(b), loops_(loops), walk_budget_(b.mesh_.num_faces()) {}
     void run(StructId path_root);
 
 private:
@@ -52,6 +52,7 @@ private:
     // unbounded on the libcgal-demo meshes; docs/algorithm.md).
     static constexpr int kSplitCost = 5;
     static constexpr uint64_t kWindow = 4096;  ///< rotations without a loop taken in, then stop
+    static constexpr uint32_t kNoOrder = ~0u;  ///< Rotation::from of a rotation made before the order
 
     MatchingBuilder& b_;
     // Built at the first rotation: until then the path only grows at its ends, and the ends are
@@ -62,6 +63,7 @@ private:
     FaceId ends_[2];               ///< front, back
     std::vector<Rotation> trial_;  ///< rotations since the last loop taken in
     int trial_cost_ = 0;           ///< swaps they added
+    uint64_t walk_budget_;         ///< steps towards_end() may still take: about one build of the order
 
     void start(StructId path_root);
     [[nodiscard]] Take best_take(uint32_t side);
@@ -72,6 +74,7 @@ private:
     [[nodiscard]] std::vector<FaceId> path_from(FaceId end) const;
     void undo_trial();
     bool take_all();
+    [[nodiscard]] FaceId towards_end(uint32_t side, FaceId x);
 };
 
 // The path starts as the one path there is, else as the first loop cut open at its first
@@ -165,14 +168,44 @@ void PathGrower::take(uint32_t side, const Take& t) {
     trial_cost_ = 0;
 }
 
-// h: a free edge of ends_[side] into face x of the path.
+// Which of x's path neighbours lies towards ends_[side] (the new end after a rotation there):
+// walks from x both ways at once, so it costs the distance to the nearer end. kNone once the
+// walks have cost as much as building the order would (then the order answers).
+FaceId PathGrower::towards_end(uint32_t side, FaceId x) {
+    HalfedgeId in[2] = {kNone, kNone};
+    FaceId first[2] = {kNone, kNone};
+    uint32_t k = 0;
+    for (HalfedgeId h : sides(x))
+        if (b_.used_[h]) in[k] = b_.mesh_.twin(h), first[k++] = b_.across(h);
+    if (k < 2) return first[0];  // x is the other end
+    for (;;)
+        for (uint32_t d = 0; d < 2; ++d) {
+            const FaceId f = Mesh::face(in[d]);
+            if (f == ends_[side]) return first[d];
+            if (walk_budget_ == 0) return kNone;
+            --walk_budget_;
+            HalfedgeId out = kNone;
+            for (HalfedgeId h : sides(f))
+                if (b_.used_[h] && h != in[d]) out = h;
+            if (out == kNone) return first[1 - d];  // this way ends at the other end
+            in[d] = b_.mesh_.twin(out);
+        }
+}
+
+// h: a free edge of ends_[side] into face x of the path. Before the order is built, the face
+// that becomes the end is found by walking (rotations near the ends are the common ones).
 void PathGrower::rotate(uint32_t side, HalfedgeId h) {
     const FaceId e = ends_[side], x = b_.across(h);
-    PathOrder& path = order();
-    const uint32_t px = path.position(x), n = path.size();
-    if (side ? px + 2 >= n : px < 2) return;  // x is the end's own neighbour
-    const uint32_t from = side ? px + 1 : px;
-    const FaceId y = path.at(side ? px + 1 : px - 1);
+    for (HalfedgeId k : sides(e))
+        if (b_.used_[k] && b_.across(k) == x) return;  // x is the end's own neighbour
+    FaceId y = path_ ? kNone : towards_end(side, x);
+    uint32_t from = kNoOrder;
+    if (y == kNone) {
+        PathOrder& path = order();
+        const uint32_t px = path.position(x);
+        from = side ? px + 1 : px;
+        y = path.at(side ? px + 1 : px - 1);
+    }
     HalfedgeId xy = kNone;
     for (HalfedgeId k : sides(x))
         if (b_.used_[k] && b_.across(k) == y) xy = k;
@@ -180,19 +213,26 @@ void PathGrower::rotate(uint32_t side, HalfedgeId h) {
     b_.set_pair(b_.used_, xy, 0);
     b_.set_pair(b_.used_, h, 1);
     trial_cost_ += b_.swaps_around({e, x, y}) - before;
-    reverse(side, from);
+    if (from != kNoOrder) reverse(side, from);
     trial_.push_back({side, h, xy, from});
     ends_[side] = y;
 }
 
+// Rotations made before the order was built are undone on the crossed edges only; the order,
+// built after them, is then stale and is built again when next needed.
 void PathGrower::undo_trial() {
+    bool stale = false;
     for (size_t i = trial_.size(); i-- > 0;) {
         const Rotation& r = trial_[i];
-        reverse(r.side, r.from);
+        if (r.from == kNoOrder)
+            stale = true;
+        else
+            reverse(r.side, r.from);
         b_.set_pair(b_.used_, r.link, 0);
         b_.set_pair(b_.used_, r.dropped, 1);
         ends_[r.side] = Mesh::face(r.link);
     }
+    if (stale) path_.reset();
     trial_.clear();
     trial_cost_ = 0;
 }
