@@ -1,0 +1,76 @@
+// singlestrip programs — large arrays on transparent huge pages (the CLI and the benchmark link
+// this file; the library does not, so it imposes no allocator on its users).
+//
+// Why: a fresh array is paid for at first touch, one page fault per 4 KB page. On the 2-core VMs
+// where singlestrip is built and measured those faults cost about two thirds of a 10M-triangle
+// run (torus, `strip`: 13.4 s with 4 KB pages, 4.6 s with 2 MB pages; same output, peak memory
+// +2%: docs/benchmarks.md). Debian's kernels give huge pages only where madvise() asks for them,
+// so every block of 4 MB or more is 2 MB-aligned and asked for. Smaller blocks are plain malloc().
+//
+// Every replaced form allocates with the malloc family, so every form of delete frees with free().
+#include <cstddef>
+#include <cstdlib>
+#include <new>
+
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
+
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+
+namespace {
+
+constexpr std::size_t kHugePage = std::size_t{2} << 20;
+constexpr std::size_t kLarge = std::size_t{4} << 20;  ///< smaller blocks: plain malloc()
+
+void* allocate(std::size_t n) noexcept {
+    if (n < kLarge) return std::malloc(n == 0 ? 1 : n);
+    const std::size_t rounded = (n + kHugePage - 1) & ~(kHugePage - 1);
+    void* p = std::aligned_alloc(kHugePage, rounded);
+    if (p != nullptr) (void)madvise(p, rounded, MADV_HUGEPAGE);  // a hint: 4 KB pages if refused
+    return p;
+}
+
+void* allocate_or_throw(std::size_t n) {
+    for (;;) {
+        if (void* p = allocate(n)) return p;
+        std::new_handler handler = std::get_new_handler();
+        if (handler == nullptr) throw std::bad_alloc();
+        handler();
+    }
+}
+
+}  // namespace
+
+void* operator new(std::size_t n) {
+    return allocate_or_throw(n);
+}
+void* operator new[](std::size_t n) {
+    return allocate_or_throw(n);
+}
+void* operator new(std::size_t n, const std::nothrow_t&) noexcept {
+    return allocate(n);
+}
+void* operator new[](std::size_t n, const std::nothrow_t&) noexcept {
+    return allocate(n);
+}
+void operator delete(void* p) noexcept {
+    std::free(p);
+}
+void operator delete[](void* p) noexcept {
+    std::free(p);
+}
+void operator delete(void* p, std::size_t) noexcept {
+    std::free(p);
+}
+void operator delete[](void* p, std::size_t) noexcept {
+    std::free(p);
+}
+void operator delete(void* p, const std::nothrow_t&) noexcept {
+    std::free(p);
+}
+void operator delete[](void* p, const std::nothrow_t&) noexcept {
+    std::free(p);
+}
+
+#endif
