@@ -182,8 +182,7 @@ FaceId PathGrower::towards_end(uint32_t side, FaceId x) {
         for (uint32_t d = 0; d < 2; ++d) {
             const FaceId f = Mesh::face(in[d]);
             if (f == ends_[side]) return first[d];
-            if (walk_budget_ == 0) return kNone;
-            --walk_budget_;
+            if (--walk_budget_ == 0) return kNone;
             HalfedgeId out = kNone;
             for (HalfedgeId h : sides(f))
                 if (b_.used_[h] && h != in[d]) out = h;
@@ -198,7 +197,7 @@ void PathGrower::rotate(uint32_t side, HalfedgeId h) {
     const FaceId e = ends_[side], x = b_.across(h);
     for (HalfedgeId k : sides(e))
         if (b_.used_[k] && b_.across(k) == x) return;  // x is the end's own neighbour
-    FaceId y = path_ ? kNone : towards_end(side, x);
+    FaceId y = walk_budget_ == 0 ? kNone : towards_end(side, x);
     uint32_t from = kNoOrder;
     if (y == kNone) {
         PathOrder& path = order();
