@@ -209,9 +209,10 @@ private:
     void merge_by_split(HalfedgeId h, StructId a, StructId b);
     [[nodiscard]] uint32_t num_structures();
     bool single_strip_ready();
-    std::vector<uint32_t> walk() const;
-    StripResult finish(std::vector<uint32_t> order);
-    StripResult finish_or_grow(std::vector<uint32_t> order);
+    /// The faces in strip order, and `swaps` (as count_swaps() gives them).
+    std::vector<uint32_t> walk(uint32_t& swaps) const;
+    StripResult finish(std::vector<uint32_t> order, uint32_t swaps);
+    StripResult finish_or_grow(std::vector<uint32_t> order, uint32_t swaps);
     StripResult grow(Mesh mesh, uint32_t splits) const;
     std::pair<StripResult, StripResult> grow_two(Mesh a, uint32_t splits_a, Mesh b, uint32_t splits_b) const;
     static constexpr uint32_t kParallelGrowMax = 4u << 20;  ///< faces up to which grow_two() uses two threads

@@ -9,38 +9,54 @@
 namespace singlestrip::matching {
 
 // Loops and paths: components of the crossed edges, the virtual face joining the pinned faces.
+// Structures are numbered by their lowest face, as a search from each unlabelled face in index
+// order would number them; the faces are read in index order (a union-find whose root is the
+// lowest face), not along the loops, which on a large mesh jump across memory at every step
+// (10M faces: 3.1x the time per face of 100K when walked).
 void MatchingBuilder::label_structures() {
-    sid_.assign(mesh_.num_faces(), kNone);
+    const uint32_t nf = mesh_.num_faces();
+    // First a parent per face (a face index, stored as a StructId), root = lowest face.
+    sid_.assign(nf, kNone);
+    for (FaceId f : mesh_.faces()) sid_[f] = StructId(f.idx());
+    auto root = [&](uint32_t x) {  // path halving: a parent never exceeds its child
+        for (;;) {
+            const uint32_t p = sid_[FaceId(x)].idx();
+            if (p == x) return x;
+            const uint32_t g = sid_[FaceId(p)].idx();
+            sid_[FaceId(x)] = StructId(g);
+            x = g;
+        }
+    };
+    auto unite = [&](FaceId a, FaceId b) {
+        const uint32_t ra = root(a.idx()), rb = root(b.idx());
+        if (ra != rb) sid_[FaceId(std::max(ra, rb))] = StructId(std::min(ra, rb));
+    };
+    for (FaceId f : mesh_.faces()) {
+        for (HalfedgeId h : sides(f))
+            if (used_[h] && across(h) > f) unite(f, across(h));
+        if (vlink_[f])
+            for (uint32_t i = 0; i < num_pins_; ++i) unite(f, pins_[i]);
+    }
+    // Then, in index order, a face's parent (lower, already labelled) gives its label.
     uf_.clear();
     cycle_.clear();
     pinned_.clear();
-    std::vector<FaceId> stack;
-    for (FaceId s : mesh_.faces()) {
-        if (sid_[s] != kNone) continue;
-        const StructId id(static_cast<uint32_t>(uf_.size()));
-        bool ends = false, pinned = false;
-        stack.assign(1, s);
-        sid_[s] = id;
-        while (!stack.empty()) {
-            const FaceId f = stack.back();
-            stack.pop_back();
-            ends |= hdeg(f) < 2;
-            auto visit = [&](FaceId g) {
-                if (sid_[g] != kNone) return;
-                sid_[g] = id;
-                stack.push_back(g);
-            };
-            for (HalfedgeId h : sides(f))
-                if (used_[h]) visit(across(h));
-            if (vlink_[f]) {
-                pinned = true;
-                for (uint32_t i = 0; i < num_pins_; ++i) visit(pins_[i]);
-            }
+    for (FaceId f : mesh_.faces()) {
+        const uint32_t p = sid_[f].idx();
+        if (p == f.idx()) {
+            sid_[f] = StructId(static_cast<uint32_t>(uf_.size()));
+            uf_.push_back(sid_[f]);
+            cycle_.push_back(1);
+            pinned_.push_back(0);
+        } else {
+            sid_[f] = sid_[FaceId(p)];
         }
-        uf_.push_back(id);
-        cycle_.push_back(!ends && !(pinned && num_pins_ == 1));
-        pinned_.push_back(pinned);
+        const StructId id = sid_[f];
+        if (hdeg(f) < 2) cycle_[id] = 0;
+        if (vlink_[f]) pinned_[id] = 1;
     }
+    for (StructId s : IdRange<StructId>(static_cast<uint32_t>(uf_.size())))
+        if (pinned_[s] && num_pins_ == 1) cycle_[s] = 0;
     stats_.loops = static_cast<uint32_t>(uf_.size());
 }
 
