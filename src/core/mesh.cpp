@@ -233,10 +233,12 @@ uint32_t Mesh::num_boundary_edges() const {
 uint32_t Mesh::num_boundary_loops() const {
     // Follow boundary half-edges: the next boundary half-edge after h starts at to(h); rotate
     // clockwise around to(h) from next(h) until a boundary half-edge is found.
-    std::vector<char> seen(twin_.size(), 0);
+    std::vector<char> seen;  // allocated at the first boundary half-edge: a closed mesh needs none
     uint32_t loops = 0;
     for (uint32_t h0 = 0; h0 < twin_.size(); ++h0) {
-        if (twin_[h0] != kNone || seen[h0]) continue;
+        if (twin_[h0] != kNone) continue;
+        if (seen.empty()) seen.assign(twin_.size(), 0);
+        if (seen[h0]) continue;
         ++loops;
         uint32_t h = h0;
         while (!seen[h]) {
