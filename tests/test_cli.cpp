@@ -15,6 +15,7 @@
 #include <unistd.h>
 
 #include "cgal_data.hpp"
+#include "fixtures.hpp"
 #include "shell.hpp"
 #include "singlestrip/encode.hpp"
 #include "singlestrip/io.hpp"
@@ -156,6 +157,25 @@ TEST(Cli, EngineChoiceReachesTheStripAndTheReport) {
     // The default is the matching engine.
     ASSERT_EQ(cli("strip " + q(in) + " -o " + q(s / "d.ply") + " --report " + q(s / "d.json")).code, 0);
     EXPECT_EQ(nlohmann::json::parse(slurp(s / "d.json"))["options"]["engine"], "matching");
+}
+
+// 600K faces: the mesh's per-half-edge arrays (7 MB each) and most of the engines' are above the
+// CLI's 4 MB threshold for huge pages (src/app/big_pages.cpp), so this strip is built in blocks
+// from that allocator; both engines, every output verified.
+TEST(Cli, LargeMeshStripsThroughTheLargeBlockAllocatorAndVerifies) {
+    Scratch s("large");
+    const singlestrip::TriangleSoup torus = singlestrip::make_torus(600, 500);
+    ASSERT_GE(3 * torus.triangles.size() * sizeof(uint32_t), size_t{4} << 20);
+    const std::string in = s / "torus.ply";
+    singlestrip::write_strip_mesh(in, torus.points, torus.triangles, std::vector<uint32_t>(torus.triangles.size(), 0));
+    for (const char* engine : {"matching", "growth"}) {
+        SCOPED_TRACE(engine);
+        const std::string out = s / (std::string(engine) + ".ply"), idx = s / (std::string(engine) + ".txt");
+        CliRun r = cli("strip " + q(in) + " -o " + q(out) + " --indices " + q(idx) + " --engine " + engine);
+        ASSERT_EQ(r.code, 0) << r.out;
+        CliRun v = cli("verify " + q(in) + " " + q(out) + " --indices " + q(idx));
+        EXPECT_EQ(v.code, 0) << v.out;
+    }
 }
 
 TEST(Cli, UnknownEngineIsAUsageError) {
