@@ -10,6 +10,7 @@
 //
 // Every replaced form allocates with the malloc family, so every form of delete frees with free().
 #include <cstddef>
+#include <cstdint>
 #include <cstdlib>
 #include <new>
 
@@ -28,6 +29,7 @@ constexpr std::size_t kLarge = std::size_t{4} << 20;  ///< smaller blocks: plain
 // to 2 MB the array never uses, for each array alive at the peak.
 void* allocate(std::size_t n) noexcept {
     if (n < kLarge) return std::malloc(n == 0 ? 1 : n);
+    if (n > SIZE_MAX - kHugePage) return nullptr;  // the rounding below would wrap round
     void* p = std::aligned_alloc(kHugePage, (n + kHugePage - 1) & ~(kHugePage - 1));
     if (p != nullptr) (void)madvise(p, n & ~(kHugePage - 1), MADV_HUGEPAGE);  // a hint: 4 KB pages if refused
     return p;
