@@ -112,9 +112,7 @@ void PathGrower::start(StructId path_root) {
 std::vector<FaceId> PathGrower::path_from(FaceId end) const {
     std::vector<FaceId> seq{end};
     for (HalfedgeId in = kNone;;) {
-        HalfedgeId out = kNone;
-        for (HalfedgeId h : sides(seq.back()))
-            if (b_.used_[h] && h != in) out = h;
+        const HalfedgeId out = b_.next_crossed(seq.back(), in);
         if (out == kNone) return seq;
         in = b_.mesh_.twin(out);
         seq.push_back(Mesh::face(in));
@@ -183,9 +181,7 @@ FaceId PathGrower::towards_end(uint32_t side, FaceId x) {
             const FaceId f = Mesh::face(in[d]);
             if (f == ends_[side]) return first[d];
             if (--walk_budget_ == 0) return kNone;
-            HalfedgeId out = kNone;
-            for (HalfedgeId h : sides(f))
-                if (b_.used_[h] && h != in[d]) out = h;
+            const HalfedgeId out = b_.next_crossed(f, in[d]);
             if (out == kNone) return first[1 - d];  // this way ends at the other end
             in[d] = b_.mesh_.twin(out);
         }

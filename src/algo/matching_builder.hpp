@@ -76,6 +76,14 @@ private:
     [[nodiscard]] uint32_t hdeg(FaceId f) const {
         return used_[Mesh::halfedge(f, 0)] + used_[Mesh::halfedge(f, 1)] + used_[Mesh::halfedge(f, 2)] + vlink_[f];
     }
+    /// The crossed half-edge of f other than `in` (the one a walk entered by; kNone at a start):
+    /// the next step of a walk along a loop or path, kNone at its end.
+    [[nodiscard]] HalfedgeId next_crossed(FaceId f, HalfedgeId in) const {
+        HalfedgeId out = kNone;
+        for (HalfedgeId h : sides(f))
+            if (used_[h] && h != in) out = h;
+        return out;
+    }
     void set_pair(EdgeFlags& a, HalfedgeId h, uint8_t value) {
         a[h] = value;
         a[mesh_.twin(h)] = value;
@@ -184,9 +192,7 @@ private:
         return [this, cut, in = cut, f = Mesh::face(cut)]() mutable -> FaceId {
             const FaceId here = f;
             if (here == kNone) return here;
-            HalfedgeId out = kNone;
-            for (HalfedgeId h : sides(here))
-                if (used_[h] && h != in) out = h;
+            const HalfedgeId out = next_crossed(here, in);
             if (out == kNone || out == mesh_.twin(cut)) {
                 f = kNone;
             } else {

@@ -380,9 +380,7 @@ std::vector<uint32_t> MatchingBuilder::walk(uint32_t& swaps) const {
     int prev_turn = 0;
     for (FaceId f = start; order.size() < nf;) {
         order.push_back(f.idx());
-        HalfedgeId out = kNone;
-        for (HalfedgeId h : sides(f))
-            if (used_[h] && h != in) out = h;
+        const HalfedgeId out = next_crossed(f, in);
         if (out == kNone || across(out) == start) break;
         if (order.size() > 1 && order.size() < nf) {  // a turn between two strip faces
             const int turn = out == Mesh::next(in) ? +1 : -1;
