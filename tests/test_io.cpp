@@ -26,8 +26,10 @@ using singlestrip::test::test_data;
 
 namespace {
 
+// One directory per tag under a process-wide scratch directory, removed at exit.
 fs::path scratch_dir(const std::string& tag) {
-    fs::path d = fs::temp_directory_path() / ("singlestrip-test-io-" + tag + "-" + std::to_string(::getpid()));
+    static const singlestrip::test::ScratchDir root("io");
+    fs::path d = root.dir / tag;
     fs::remove_all(d);
     fs::create_directories(d);
     return d;

@@ -24,6 +24,7 @@
 #include <thread>
 #include <vector>
 
+#include "shell.hpp"
 #include "singlestrip/errors.hpp"
 #include "singlestrip/io.hpp"
 
@@ -41,13 +42,10 @@ namespace fs = std::filesystem;
 
 namespace {
 
-fs::path scratch() {
-    static const fs::path dir = [] {
-        fs::path d = fs::temp_directory_path() / ("singlestrip_read_limits_" + std::to_string(::getpid()));
-        fs::create_directories(d);
-        return d;
-    }();
-    return dir;
+// Removed at exit (the forked readers leave by _exit, which runs no destructor).
+const fs::path& scratch() {
+    static const singlestrip::test::ScratchDir dir("read-limits");
+    return dir.dir;
 }
 
 std::string write_file(const std::string& bytes, const std::string& ext) {
