@@ -166,6 +166,21 @@ int reps_for(uint64_t tris, bool quick) {
     return 1;
 }
 
+/// Fresh and warm times of adjacency + strip + encode (EngineRun::t_cold, t_warm): a median of
+/// repetitions where 100K meshes reuse heap memory and 10M ones map fresh pages every time
+/// compares memory states, not sizes.
+void core_runs(const Spec& spec, EngineRun& run, ss::StripEngine engine, const Settings& cfg) {
+    const int passes = 1 + std::max(2, spec.reps);
+    const CoreRuns warm = run_pod<CoreRuns>([&] { return measure_core_runs(spec, engine, passes, true, cfg.budget / 2); }, cfg);
+    const CoreRuns fresh = run_pod<CoreRuns>([&] { return measure_core_runs(spec, engine, 1, false, 0); }, cfg);
+    std::vector<double> t{run.t_first};
+    for (const CoreRuns* c : {&warm, &fresh})
+        if (c->status == 0) t.push_back(c->first);
+    std::sort(t.begin(), t.end());
+    run.t_cold = t[t.size() / 2];
+    if (warm.status == 0) run.t_warm = warm.warm;
+}
+
 void usage() {
     std::cout << "usage: singlestrip_bench [--quick] [--out DIR] [--tmp DIR] [--cgal DIR] [--only SUBSTR]\n"
                  "         [--no-cgal] [--no-scaling] [--no-awkward] [--no-constraints] [--no-read] [--read-only] [--with-10m]\n"
@@ -328,6 +343,7 @@ int main(int argc, char** argv) {
                 const auto te = Clock::now();
                 row.eng[e] = run_pod<EngineRun>([&] { return measure_engine(spec, kEngine[e], out_path, cfg); }, cfg);
                 row.eng[e].wall = seconds_since(te);
+                if (spec.generate && row.eng[e].status == 0) core_runs(spec, row.eng[e], kEngine[e], cfg);
                 progress(e + 1 < kEngines ? "|" : "");
             }
             std::error_code ec;

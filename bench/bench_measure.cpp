@@ -4,6 +4,7 @@
 // <out>/awkward.dat (gnuplot). Progress goes to stderr only when it is a terminal.
 #include <fcntl.h>
 #include <malloc.h>
+
 #include <poll.h>
 #include <signal.h>
 #include <sys/resource.h>
@@ -11,6 +12,7 @@
 #include <sys/time.h>
 #include <sys/wait.h>
 #include <unistd.h>
+#include <limits>
 
 #include <algorithm>
 #include <chrono>
@@ -302,66 +304,108 @@ uint64_t tool_peak_kb(const std::string& path, const ss::StripOptions& strip) {
     return static_cast<uint64_t>(ru.ru_maxrss);
 }
 
+namespace {
+
+/// One pass as the CLI makes it, each stage timed: read -> prepare_soup_components(orient) ->
+/// Mesh::from_soup -> build_strip -> strip_arrays + encode_triangle_strip. status 1: the input
+/// was rejected (skipped, not failed); 2: our error. Other exceptions propagate.
+struct Pass {
+    int status = 0;
+    std::string message;
+    double read = 0, check = 0, adj = 0, build = 0, encode = 0;
+    uint64_t in_vertices = 0, in_tris = 0;
+    ss::StripStats stats;
+    ss::StripArrays arr;
+    std::vector<uint32_t> indices;
+};
+
+Pass strip_once(const Spec& spec, const ss::StripOptions& options) {
+    Pass p;
+    auto t = Clock::now();
+    ss::TriangleSoup soup;
+    try {
+        soup = ss::read_mesh_file(spec.path);
+    } catch (const ss::InputError& e) {
+        p.status = 1;  // a file the reader rejects (e.g. a point cloud) is skipped, not failed
+        p.message = e.what();
+        return p;
+    }
+    p.read = seconds_since(t);
+    t = Clock::now();
+    // As stripify() does: a large shuffled soup is checked and stripped in a Z-order.
+    std::vector<uint32_t> origin, vertex_origin;
+    try {
+        ss::PreparedSoup prepared = ss::prepare_soup_components(std::move(soup), ss::PrepareOptions{true, true, true}, spec.path);
+        soup = std::move(prepared.soup);
+        origin = std::move(prepared.face_origin);
+        vertex_origin = std::move(prepared.vertex_origin);
+    } catch (const ss::InputError& e) {
+        p.status = 1;
+        p.message = e.what();
+        return p;
+    }
+    p.check = seconds_since(t);
+    p.in_vertices = soup.points.size();
+    p.in_tris = soup.triangles.size();
+    t = Clock::now();
+    ss::Mesh mesh = ss::Mesh::from_soup(soup);
+    p.adj = seconds_since(t);
+    if (const uint32_t parts = mesh.num_components(); parts > 1) {  // timed here as one strip
+        p.status = 1;
+        p.message = std::to_string(parts) + " edge-connected components (the bench times one strip; stripify() strips each)";
+        return p;
+    }
+    // The mesh holds its own copy of everything: drop the soup, as a memory-aware caller would.
+    soup = ss::TriangleSoup{};
+    t = Clock::now();
+    ss::StripResult res = ss::build_strip(std::move(mesh), in_numbering(options, vertex_origin));
+    p.build = seconds_since(t);
+    t = Clock::now();
+    p.arr = ss::strip_arrays(res);
+    for (uint32_t& f : p.arr.parent)
+        if (!origin.empty()) f = origin[f];
+    to_given_vertices(p.arr, vertex_origin);
+    p.indices = ss::encode_triangle_strip(p.arr.faces);
+    p.encode = seconds_since(t);
+    p.stats = res.stats;
+    return p;
+}
+
+ss::StripOptions engine_options(const Spec& spec, ss::StripEngine engine) {
+    ss::StripOptions options;
+    options.engine = engine;
+    if (!spec.walls_path.empty()) options.constraint_edges = ss::as_constraints(read_walls(spec.walls_path));
+    return options;
+}
+
+}  // namespace
+
 EngineRun measure_engine(const Spec& spec, ss::StripEngine engine, const std::string& out_path, const Settings& cfg) {
     EngineRun r;
     std::vector<double> tr, tc, ta, tb, te, tw, tt;
     ss::StripArrays last;
     std::vector<uint32_t> last_indices;
-    ss::StripOptions options;
-    options.engine = engine;
-    if (!spec.walls_path.empty()) options.constraint_edges = ss::as_constraints(read_walls(spec.walls_path));
+    const ss::StripOptions options = engine_options(spec, engine);
     r.peak_kb = tool_peak_kb(spec.path, options);
     const auto start = Clock::now();
     try {
         for (int rep = 0; rep < spec.reps; ++rep) {
-            auto t = Clock::now();
-            ss::TriangleSoup soup;
-            try {
-                soup = ss::read_mesh_file(spec.path);
-            } catch (const ss::InputError& e) {
-                r.status = 1;  // a file the reader rejects (e.g. a point cloud) is skipped, not failed
-                set_message(r, e.what());
+            Pass p = strip_once(spec, options);
+            if (p.status != 0) {
+                r.status = p.status;
+                set_message(r, p.message);
                 return r;
             }
-            tr.push_back(seconds_since(t));
-            t = Clock::now();
-            // As stripify() does: a large shuffled soup is checked and stripped in a Z-order.
-            std::vector<uint32_t> origin, vertex_origin;
-            try {
-                ss::PreparedSoup prepared = ss::prepare_soup_components(std::move(soup), ss::PrepareOptions{true, true, true}, spec.path);
-                soup = std::move(prepared.soup);
-                origin = std::move(prepared.face_origin);
-                vertex_origin = std::move(prepared.vertex_origin);
-            } catch (const ss::InputError& e) {
-                r.status = 1;
-                set_message(r, e.what());
-                return r;
-            }
-            tc.push_back(seconds_since(t));
-            r.in_vertices = soup.points.size();
-            r.in_tris = soup.triangles.size();
-            t = Clock::now();
-            ss::Mesh mesh = ss::Mesh::from_soup(soup);
-            ta.push_back(seconds_since(t));
-            if (const uint32_t parts = mesh.num_components(); parts > 1) {  // timed here as one strip
-                r.status = 1;
-                set_message(r, std::to_string(parts) + " edge-connected components (the bench times one strip; stripify() strips each)");
-                return r;
-            }
-            // The mesh holds its own copy of everything: drop the soup, as a memory-aware caller would.
-            soup = ss::TriangleSoup{};
-            t = Clock::now();
-            ss::StripResult res = ss::build_strip(std::move(mesh), in_numbering(options, vertex_origin));
-            tb.push_back(seconds_since(t));
-            t = Clock::now();
-            ss::StripArrays arr = ss::strip_arrays(res);
-            for (uint32_t& p : arr.parent)
-                if (!origin.empty()) p = origin[p];
-            to_given_vertices(arr, vertex_origin);
-            std::vector<uint32_t> indices = ss::encode_triangle_strip(arr.faces);
-            te.push_back(seconds_since(t));
+            tr.push_back(p.read);
+            tc.push_back(p.check);
+            ta.push_back(p.adj);
+            tb.push_back(p.build);
+            te.push_back(p.encode);
             if (rep == 0) {
-                const ss::StripStats& st = res.stats;
+                r.in_vertices = p.in_vertices;
+                r.in_tris = p.in_tris;
+                r.t_first = p.adj + p.build + p.encode;  // a fresh process: every array newly mapped
+                const ss::StripStats& st = p.stats;
                 r.out_tris = st.output_triangles;
                 r.splits = st.splits;
                 r.swaps = st.swaps;
@@ -371,18 +415,17 @@ EngineRun measure_engine(const Spec& spec, ss::StripEngine engine, const std::st
                 r.detours = st.detours;
                 r.genus = st.genus;
                 r.boundary_loops = st.boundary_loops;
-                r.indices = indices.size();
-                const std::vector<ss::Triangle> dec = ss::decode_triangle_strip(indices);
-                r.decode_ok = dec.size() == arr.faces.size() && arr.faces.size() == r.out_tris &&
-                              std::equal(dec.begin(), dec.end(), arr.faces.begin(), same_oriented);
+                r.indices = p.indices.size();
+                const std::vector<ss::Triangle> dec = ss::decode_triangle_strip(p.indices);
+                r.decode_ok = dec.size() == p.arr.faces.size() && p.arr.faces.size() == r.out_tris &&
+                              std::equal(dec.begin(), dec.end(), p.arr.faces.begin(), same_oriented);
             }
-            res = ss::StripResult{};
-            t = Clock::now();
-            ss::write_strip_mesh(out_path, arr.points, arr.faces, arr.parent);
+            const auto t = Clock::now();
+            ss::write_strip_mesh(out_path, p.arr.points, p.arr.faces, p.arr.parent);
             tw.push_back(seconds_since(t));
             tt.push_back(tr.back() + tc.back() + ta.back() + tb.back() + te.back() + tw.back());
-            last = std::move(arr);
-            last_indices = std::move(indices);
+            last = std::move(p.arr);
+            last_indices = std::move(p.indices);
             ++r.reps;
             progress(".");
             // A median of five minute-long runs tells little more than one, and the full run has
@@ -412,6 +455,32 @@ EngineRun measure_engine(const Spec& spec, ss::StripEngine engine, const std::st
             std::snprintf(r.verify_message, sizeof r.verify_message, "verifier: %s", e.what());
         }
     }
+    return r;
+}
+
+CoreRuns measure_core_runs(const Spec& spec, ss::StripEngine engine, int passes, bool keep_memory, double budget) {
+    if (keep_memory) {  // every block from the heap, which keeps what is freed
+        mallopt(M_MMAP_MAX, 0);
+        mallopt(M_TRIM_THRESHOLD, std::numeric_limits<int>::max());
+    }
+    CoreRuns r;
+    std::vector<double> later;
+    try {
+        const ss::StripOptions options = engine_options(spec, engine);
+        const auto start = Clock::now();
+        for (int i = 0; i < passes && (i < 3 || seconds_since(start) < budget); ++i) {
+            const Pass p = strip_once(spec, options);
+            r.status = p.status;
+            set_message(r, p.message);
+            if (p.status != 0) return r;
+            (i == 0 ? r.first : later.emplace_back()) = p.adj + p.build + p.encode;
+        }
+    } catch (const std::exception& e) {
+        r.status = 2;
+        set_message(r, e.what());
+        return r;
+    }
+    if (!later.empty()) r.warm = median(later);
     return r;
 }
 

@@ -72,8 +72,21 @@ struct EngineRun {
     char verify_message[256] = {};
     double t_read = NAN, t_check = NAN, t_adj = NAN, t_build = NAN, t_encode = NAN, t_write = NAN;
     double t_total = NAN;  ///< read -> write, median of the per-repetition sums
+    /// Adjacency + strip + encode, set by the parent for generated meshes (the linearity targets
+    /// compare these, like with like at every size). t_first: this child's first repetition, in
+    /// a fresh process (every array newly mapped, as in a CLI run); t_cold: the median of that
+    /// and two more fresh processes; t_warm: the median of passes after the first in a process
+    /// whose allocator keeps freed memory (every array already mapped).
+    double t_first = NAN, t_cold = NAN, t_warm = NAN;
     uint64_t peak_kb = 0;
     double wall = NAN;  ///< filled by the parent
+};
+
+struct CoreRuns {
+    int status = -1;  ///< as EngineRun::status
+    char message[128] = {};
+    double first = NAN;  ///< adjacency + strip + encode of the process's first pass
+    double warm = NAN;   ///< median of the later passes (NaN with one pass)
 };
 
 struct Reference {
@@ -123,6 +136,10 @@ struct Row {
 /// Writes the generated mesh of `spec` (and its walls) where spec says.
 void write_generated(const Spec& spec);
 EngineRun measure_engine(const Spec& spec, ss::StripEngine engine, const std::string& out_path, const Settings& cfg);
+/// Up to `passes` passes of adjacency + strip + encode (at least three before `budget` seconds
+/// stop them), in a fresh child. keep_memory: freed memory stays with the allocator (no mmap, no
+/// trim), so the passes after the first are warm.
+CoreRuns measure_core_runs(const Spec& spec, ss::StripEngine engine, int passes, bool keep_memory, double budget);
 Reference measure_reference(const Spec& spec, int mreps, double budget);
 ConstraintRun measure_constraints(const Spec& spec, const Settings& cfg);
 
