@@ -361,7 +361,7 @@ Pass strip_once(const Spec& spec, const ss::StripOptions& options) {
     ss::StripResult res = ss::build_strip(std::move(mesh), in_numbering(options, vertex_origin));
     p.build = seconds_since(t);
     t = Clock::now();
-    p.arr = ss::strip_arrays(res);
+    p.arr = ss::strip_arrays(std::move(res));  // as stripify() does: the points are moved, not copied
     for (uint32_t& f : p.arr.parent)
         if (!origin.empty()) f = origin[f];
     to_given_vertices(p.arr, vertex_origin);

@@ -221,3 +221,21 @@ TEST_P(Strip, FundamentalTrianglesMatchTopology) {
         EXPECT_EQ(rep.cycle_rank, c.expected);
     }
 }
+
+// The moving strip_arrays() gives what the copying one gives, and leaves only the stats.
+TEST_P(Strip, MovedArraysEqualCopiedOnes) {
+    for (const auto& fam : families()) {
+        SCOPED_TRACE(fam.name);
+        StripResult r = build_strip(Mesh::from_soup(fam.soup), opts());
+        const StripArrays copied = strip_arrays(r);
+        const StripStats stats = r.stats;
+        const StripArrays moved = strip_arrays(std::move(r));
+        EXPECT_EQ(moved.points, copied.points);
+        EXPECT_EQ(moved.faces, copied.faces);
+        EXPECT_EQ(moved.parent, copied.parent);
+        EXPECT_EQ(r.stats.output_triangles, stats.output_triangles);  // NOLINT(bugprone-use-after-move): documented
+        EXPECT_EQ(r.stats.splits, stats.splits);
+        EXPECT_TRUE(r.order.empty());
+        EXPECT_EQ(r.mesh.num_faces(), 0u);
+    }
+}

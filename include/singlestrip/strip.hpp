@@ -112,5 +112,8 @@ StripResult build_strip_matching(Mesh mesh, const StripOptions& options);
 
 /// The output arrays (StripArrays, soup.hpp) of a strip: faces in strip order. O(V + F).
 StripArrays strip_arrays(const StripResult& result);
+/// The same arrays without a copy of the points: the mesh gives them up, and the rest of the
+/// result (mesh, order) is freed; only result.stats stays. O(F).
+StripArrays strip_arrays(StripResult&& result);
 
 }  // namespace singlestrip

@@ -285,4 +285,20 @@ StripArrays strip_arrays(const StripResult& result) {
     return out;
 }
 
+StripArrays strip_arrays(StripResult&& result) {
+    StripArrays out;
+    out.faces.reserve(result.order.size());
+    out.parent.reserve(result.order.size());
+    const auto& cv = result.mesh.corner_vertices();
+    for (const uint32_t f : result.order) {
+        out.faces.push_back({cv[3 * f], cv[3 * f + 1], cv[3 * f + 2]});
+        out.parent.push_back(result.mesh.parent(FaceId(f)).idx());
+    }
+    out.points = std::move(result.mesh).release_points();
+    StripResult kept;
+    kept.stats = result.stats;
+    result = std::move(kept);
+    return out;
+}
+
 }  // namespace singlestrip

@@ -183,24 +183,6 @@ void compute_cycles(PipelineResult& r, PipelineStage* stage) {
     r.cycles = compute_fundamental_cycles(r.strip);
 }
 
-/// strip_arrays() without a second copy of the points: the mesh gives its points up, and the
-/// rest of r.strip (mesh, order, times) is freed; only the stats stay.
-StripArrays release_strip_arrays(StripResult& s) {
-    StripArrays out;
-    out.faces.reserve(s.order.size());
-    out.parent.reserve(s.order.size());
-    const auto& cv = s.mesh.corner_vertices();
-    for (const uint32_t f : s.order) {
-        out.faces.push_back({cv[3 * f], cv[3 * f + 1], cv[3 * f + 2]});
-        out.parent.push_back(s.mesh.parent(FaceId(f)).idx());
-    }
-    out.points = std::move(s.mesh).release_points();
-    StripResult kept;
-    kept.stats = s.stats;
-    s = std::move(kept);
-    return out;
-}
-
 /// Today's path: one component, one strip.
 void strip_one(PipelineResult& r, bool self_check, PipelineStage* stage) {
     // Attributes are blended from r.input after the strip: then it has to stay.
@@ -212,7 +194,7 @@ void strip_one(PipelineResult& r, bool self_check, PipelineStage* stage) {
     if (self_check) r.strip.mesh.validate();
     if (lean) compute_cycles(r, stage);
     enter(stage, PipelineStage::Encode);
-    r.arrays = lean ? release_strip_arrays(r.strip) : strip_arrays(r.strip);
+    r.arrays = lean ? strip_arrays(std::move(r.strip)) : strip_arrays(r.strip);
     r.indices = encode_triangle_strip(r.arrays.faces);
     const StripStats& st = r.strip.stats;
     r.components.push_back({st.input_triangles, st.output_triangles, st.splits, st.genus, st.boundary_loops, 0, r.indices.size()});
