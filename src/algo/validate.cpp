@@ -192,6 +192,9 @@ struct Analysis {
     // Edges come in (lo, hi) order and groups in third-vertex order, so the report is ordered by
     // sorted vertex triple, faces ascending, without sorting the faces.
     void report_duplicates(uint32_t lo, uint32_t hi, Range b, Range e) {
+        // Two faces (nearly every edge): no duplicate unless they share the third vertex too. Saves
+        // the list below, a heap allocation per edge.
+        if (e - b == 2 && (third(b[0]) != third(b[1]) || third(b[0]) <= hi)) return;
         std::vector<std::pair<uint32_t, uint32_t>> by_third;  // (third vertex, face), usually 2 entries
         for (auto i = b; i != e; ++i)
             if (third(*i) > hi) by_third.emplace_back(third(*i), *i / 3);
