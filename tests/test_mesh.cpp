@@ -171,3 +171,42 @@ TEST(Mesh, ComponentLabelsFollowTheFirstFaceOfEachPiece) {
         EXPECT_EQ(m.num_components(), 7u);
     }
 }
+
+// Past 2^17 faces the pairing and the fan checks run in two halves at once; the error must be
+// the one a single pass gives: the defect at the lowest vertex, even when the other half has one.
+TEST(Mesh, LargeMeshReportsTheFirstDefectAsOnePassWould) {
+    const TriangleSoup torus = make_torus(400, 400);  // 320K faces
+    const auto nv = static_cast<uint32_t>(torus.points.size());
+    auto with_spike_at = [&](std::initializer_list<uint32_t> vertices) {  // a second fan at each vertex
+        TriangleSoup s = torus;
+        for (uint32_t v : vertices) {
+            const auto a = static_cast<uint32_t>(s.points.size());
+            s.points.push_back({0, 0, 5});
+            s.points.push_back({0, 1, 5});
+            s.triangles.push_back({v, a, a + 1});
+        }
+        return s;
+    };
+    auto message = [](const TriangleSoup& s) {
+        try {
+            (void)Mesh::from_soup(s);
+        } catch (const InputError& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    EXPECT_NE(message(with_spike_at({nv - 10})).find("vertex " + std::to_string(nv - 10) + " "), std::string::npos);
+    EXPECT_NE(message(with_spike_at({nv - 10, 7})).find("vertex 7 "), std::string::npos);
+    // Three faces on an edge: the copy of a face near the end and one near the start.
+    TriangleSoup dup = torus;
+    dup.triangles.push_back(torus.triangles.back());
+    EXPECT_NE(message(dup).find("non-manifold edge"), std::string::npos);
+    dup.triangles.push_back(torus.triangles.front());
+    const Triangle& t = torus.triangles.front();
+    const std::string first_edge = "(" + std::to_string(std::min({t[0], t[1], t[2]})) + ", ";  // edges come by smaller end
+    EXPECT_NE(message(dup).find("edge " + first_edge), std::string::npos) << message(dup);
+    // And without defects the two halves pair every edge as one pass does.
+    const Mesh m = Mesh::from_soup(torus);
+    m.validate();
+    EXPECT_EQ(m.num_boundary_edges(), 0u);
+}

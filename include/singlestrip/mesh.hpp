@@ -208,8 +208,10 @@ private:
     static Mesh build(const std::vector<Triangle>& triangles, std::vector<Point3> points, std::vector<Triangle>* release = nullptr);
     void reserve_for_split();
     void pair_halfedges(const SoupEdges& edges);
+    void pair_halfedge_range(const SoupEdges& edges, uint32_t v_begin, uint32_t v_end);
     void assign_vertex_halfedges();
     void check_vertex_fans() const;
+    void check_fan_range(const std::vector<uint32_t>& corners_at, uint32_t v_begin, uint32_t v_end) const;
 
     std::vector<Point3> points_;             ///< vertex positions; input vertices first, then midpoints
     std::vector<uint32_t> corner_vertex_;    ///< I1, I2: vertex of each corner, 3 per face, CCW

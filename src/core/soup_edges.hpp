@@ -60,7 +60,12 @@ public:
     /// Calls fn(const Edge&) for every undirected edge, in (lo, hi) order. O(V + F) in all.
     template <class Fn>
     void for_each_edge(Fn&& fn) const {
-        for (size_t v = 0; v + 1 < start_.size(); ++v) {
+        for_each_edge(0, num_vertices(), fn);
+    }
+    /// The same for the edges whose smaller end is in [v_begin, v_end).
+    template <class Fn>
+    void for_each_edge(size_t v_begin, size_t v_end, Fn&& fn) const {
+        for (size_t v = v_begin; v < v_end; ++v) {
             const Iterator b = halfedges_.begin() + start_[v], e = halfedges_.begin() + start_[v + 1];
             for (Iterator i = b; i != e;) {
                 const uint32_t other = hi(*i);
@@ -77,6 +82,12 @@ public:
     static void pair(const Edge& e, std::vector<uint32_t>& twin) {
         twin[e.first[0]] = e.first[1];
         twin[e.first[1]] = e.first[0];
+    }
+
+    /// The smaller end below which half the half-edges lie (to split for_each_edge in two). O(log V).
+    [[nodiscard]] uint32_t middle_vertex() const {
+        const uint32_t half = start_.back() / 2;
+        return static_cast<uint32_t>(std::lower_bound(start_.begin(), start_.end(), half) - start_.begin());
     }
 
     /// Whether some half-edge joins a and b (either way). O(log degree).
