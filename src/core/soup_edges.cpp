@@ -1,11 +1,14 @@
 // singlestrip — half-edges grouped by undirected edge (soup_edges.hpp).
 #include "soup_edges.hpp"
 
+#include "two_halves.hpp"
+
 namespace singlestrip {
 
 namespace {
 
-constexpr uint32_t kSmallBucket = 64;  ///< insertion sort up to this many half-edges at one end
+constexpr uint32_t kSmallBucket = 64;                    ///< insertion sort up to this many half-edges at one end
+constexpr size_t kTwoThreadHalfedges = size_t{3} << 17;  ///< from 2^17 faces the sorts run in two halves
 
 /// Calls fn(h) for every half-edge of a usable face whose two ends are below nv, h ascending.
 template <class Fn>
@@ -47,17 +50,24 @@ void SoupEdges::sort_by_smaller_end(const std::vector<char>* usable) {
             his[at] = std::max(a, b);
         });
     }
-    for (size_t v = 0; v < nv; ++v)
-        for (uint32_t i = start_[v] + 1; i < start_[v + 1]; ++i) {
-            const uint32_t h = halfedges_[i], key = his[i];
-            uint32_t j = i;
-            for (; j > start_[v] && his[j - 1] > key; --j) {
-                halfedges_[j] = halfedges_[j - 1];
-                his[j] = his[j - 1];
-            }
-            halfedges_[j] = h;
-            his[j] = key;
+    // Each end's range is its own: two halves of the ends sort at once on a large soup.
+    run_in_two_halves(middle_vertex(), static_cast<uint32_t>(nv), halfedges_.size() >= kTwoThreadHalfedges,
+                      [&](uint32_t v_begin, uint32_t v_end) {
+                          for (uint32_t v = v_begin; v < v_end; ++v) insertion_sort(start_[v], start_[v + 1], his);
+                      });
+}
+
+void SoupEdges::insertion_sort(uint32_t first, uint32_t last, std::vector<uint32_t>& his) {
+    for (uint32_t i = first + 1; i < last; ++i) {
+        const uint32_t h = halfedges_[i], key = his[i];
+        uint32_t j = i;
+        for (; j > first && his[j - 1] > key; --j) {
+            halfedges_[j] = halfedges_[j - 1];
+            his[j] = his[j - 1];
         }
+        halfedges_[j] = h;
+        his[j] = key;
+    }
 }
 
 // A vertex of high valence: stable counting sorts by the larger end, then by the smaller one

@@ -95,6 +95,7 @@ public:
 
 private:
     void sort_by_smaller_end(const std::vector<char>* usable);
+    void insertion_sort(uint32_t first, uint32_t last, std::vector<uint32_t>& his);
     void sort_two_pass(const std::vector<char>* usable);
     const std::vector<Triangle>* triangles_;
     std::vector<uint32_t> start_, halfedges_;
