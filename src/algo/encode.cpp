@@ -311,9 +311,7 @@ std::vector<uint32_t> encode_triangle_strip(const std::vector<Triangle>& faces) 
     const std::array<std::optional<Matrix>, 64>& cache = tab.step;
     std::vector<uint8_t> pattern(n, 0);                 // pattern key of step j-1 -> j
     std::vector<std::array<uint8_t, kStates>> back(n);  // best predecessor state
-    // Costs relative to the cheapest state (base): they differ by at most one transition's cost
-    // (under 20), so a byte holds each and kUnreachable stays apart. One relaxation step works on
-    // all the states at once in plain byte lanes (the compiler's vector unit takes them).
+    // Costs relative to the cheapest state, base + cost[t] in all (the bounds: top of the file).
     Lanes cost;
     cost.fill(kUnreachable);
     for (int t = 0; t < kStates; ++t) cost[t] = first[t].cost;

@@ -270,22 +270,10 @@ std::optional<StripEngine> parse_engine(std::string_view name) noexcept {
     return std::nullopt;
 }
 
-StripArrays strip_arrays(const StripResult& result) {
-    StripArrays out;
-    out.points = result.mesh.points();
-    out.faces.reserve(result.order.size());
-    out.parent.reserve(result.order.size());
-    const Mesh& mesh = result.mesh;
-    for (const uint32_t i : result.order) {
-        const FaceId f(i);
-        const HalfedgeId h = Mesh::halfedge(f, 0);
-        out.faces.push_back({mesh.from(h).idx(), mesh.to(h).idx(), mesh.opposite(h).idx()});
-        out.parent.push_back(mesh.parent(f).idx());
-    }
-    return out;
-}
+namespace {
 
-StripArrays strip_arrays(StripResult&& result) {
+/// The faces in strip order and their input faces (the points are the caller's to copy or move).
+StripArrays faces_in_order(const StripResult& result) {
     StripArrays out;
     out.faces.reserve(result.order.size());
     out.parent.reserve(result.order.size());
@@ -294,6 +282,19 @@ StripArrays strip_arrays(StripResult&& result) {
         out.faces.push_back({cv[3 * f], cv[3 * f + 1], cv[3 * f + 2]});
         out.parent.push_back(result.mesh.parent(FaceId(f)).idx());
     }
+    return out;
+}
+
+}  // namespace
+
+StripArrays strip_arrays(const StripResult& result) {
+    StripArrays out = faces_in_order(result);
+    out.points = result.mesh.points();
+    return out;
+}
+
+StripArrays strip_arrays(StripResult&& result) {
+    StripArrays out = faces_in_order(result);
     out.points = std::move(result.mesh).release_points();
     StripResult kept;
     kept.stats = result.stats;

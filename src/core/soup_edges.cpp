@@ -7,8 +7,7 @@ namespace singlestrip {
 
 namespace {
 
-constexpr uint32_t kSmallBucket = 64;                    ///< insertion sort up to this many half-edges at one end
-constexpr size_t kTwoThreadHalfedges = size_t{3} << 17;  ///< from 2^17 faces the sorts run in two halves
+constexpr uint32_t kSmallBucket = 64;  ///< insertion sort up to this many half-edges at one end
 
 /// Calls fn(h) for every half-edge of a usable face whose two ends are below nv, h ascending.
 template <class Fn>
@@ -51,7 +50,7 @@ void SoupEdges::sort_by_smaller_end(const std::vector<char>* usable) {
         });
     }
     // Each end's range is its own: two halves of the ends sort at once on a large soup.
-    run_in_two_halves(middle_vertex(), static_cast<uint32_t>(nv), halfedges_.size() >= kTwoThreadHalfedges,
+    run_in_two_halves(middle_vertex(), static_cast<uint32_t>(nv), halfedges_.size() >= 3 * kTwoThreadFaces,
                       [&](uint32_t v_begin, uint32_t v_end) {
                           for (uint32_t v = v_begin; v < v_end; ++v) insertion_sort(start_[v], start_[v + 1], his);
                       });

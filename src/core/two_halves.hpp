@@ -3,12 +3,17 @@
 // checks). Errors come out as a sequential loop would give them: the first half's first.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <exception>
 #include <system_error>
 #include <thread>
 
 namespace singlestrip {
+
+/// From this many faces a pass is split in two (a thread costs tens of microseconds; the passes
+/// that use it take tens of milliseconds there).
+inline constexpr size_t kTwoThreadFaces = size_t{1} << 17;
 
 /// Calls fn(0, mid) here and fn(mid, n) on another thread when `parallel` (else fn(0, n)). If
 /// the first half throws, that is rethrown (after the other half ends); else the second's.
