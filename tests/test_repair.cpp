@@ -197,11 +197,13 @@ TEST(Components, OneStripPerComponentWithEitherJoin) {
     EXPECT_TRUE(strip_and_verify(s, o, &r).ok());
     EXPECT_EQ(r.components[0].input_triangles, make_torus(8, 5).triangles.size());
     o.strip.target = VertexId(0);
+    PipelineStage stage = PipelineStage::Done;
     try {
-        stripify(s, o);
+        stripify(s, o, &stage);
         ADD_FAILURE() << "source and target in different components";
     } catch (const RequestError& e) {
         EXPECT_NE(std::string(e.what()).find("same component"), std::string::npos) << e.what();
+        EXPECT_EQ(stage, PipelineStage::Strip) << "a request error belongs to the strip stage (the fuzz check expects it there)";
     }
     // Constraint edges go to the component holding them; a pair across components is no edge.
     PipelineOptions c;

@@ -177,11 +177,13 @@ void strip_components(PipelineResult& r, const std::vector<uint32_t>& comp, uint
     check_requests(r.input, o);
     if (stage) *stage = PipelineStage::Mesh;
     const Split sp = split_parts(r.input, comp, count);
+    if (stage) *stage = PipelineStage::Strip;  // source and target in two parts is a request error
+    const std::vector<uint32_t> order = part_order(sp, o);
     r.arrays.points = r.input.points;
     r.strip.stats.engine = o.engine;
     std::vector<std::vector<uint32_t>> strips;
     Cycles cycles;
-    for (uint32_t c : part_order(sp, o)) {
+    for (uint32_t c : order) {
         const Part& p = sp.parts[c];
         if (stage) *stage = PipelineStage::Strip;
         const StripResult res = strip_part(p, part_options(sp, comp, o, c), c, count, r.options.self_check);
