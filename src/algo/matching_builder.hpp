@@ -62,6 +62,14 @@ private:
     IdVector<FaceId, FaceId> aug_prev_;
     IdVector<FaceId, HalfedgeId> aug_matched_, aug_unmatched_;
     std::vector<FaceId> aug_queue_;
+    /// augment_fewest_swaps()' queue: expand face x, or (end set) end the path across end.
+    struct AugEntry {
+        int swaps;
+        FaceId x;
+        HalfedgeId end;
+        bool operator<(const AugEntry& o) const { return swaps > o.swaps; }  ///< fewest swaps on top
+    };
+    std::vector<AugEntry> aug_heap_;
 
     [[nodiscard]] FaceId across(HalfedgeId h) const { return mesh_.neighbor(h); }
     [[nodiscard]] bool passable(HalfedgeId h) const { return !mesh_.is_boundary(h) && !blocked_[h]; }
@@ -127,6 +135,9 @@ private:
     void choose_pattern();
     [[nodiscard]] long pattern_cost(const Pattern& p) const;
     bool augment_from(FaceId u, IdVector<FaceId, uint32_t>& stamp, uint32_t mark, size_t budget);
+    bool augment_fewest_swaps(FaceId u, IdVector<FaceId, uint32_t>& stamp, uint32_t mark, size_t budget);
+    /// Swaps settled by one step of augment_fewest_swaps(): x takes h as its matched edge.
+    [[nodiscard]] int step_swaps(FaceId x, HalfedgeId h, bool x_is_root, bool y_is_end) const;
     // Augmenting path from one short face through blossoms (matching_blossom.cpp).
     /// Exhausted: the budget ran out (no path among the faces reached); Unknown: the search met
     /// faces its graph does not model (pinned faces wanting two matched edges).
