@@ -236,6 +236,8 @@ private:
     void keep_better(StripResult& r, StripResult alt) const;
     StripResult as_fallback(StripResult r) const;
     StripResult fallback();
+    StripResult retry_or_fallback();
+    bool plain_paths_ = false;  ///< step 6 by shortest augmenting paths (the retry before the fallback)
     Mesh input_mesh() const;
     Mesh pre_merge_mesh(const Mesh& original) const;
 };

@@ -299,7 +299,8 @@ void MatchingBuilder::repair_short(std::vector<FaceId>& short_faces) {
     uint32_t mark = 0;
     for (size_t budget : {size_t{64}, size_t{1024}}) {
         for (FaceId f : short_faces)
-            while (quota_[f] > 0 && augment_fewest_swaps(f, stamp, ++mark, budget)) {
+            while (quota_[f] > 0 &&
+                   (plain_paths_ ? augment_from(f, stamp, ++mark, budget) : augment_fewest_swaps(f, stamp, ++mark, budget))) {
             }
         std::erase_if(short_faces, [&](FaceId f) { return quota_[f] == 0; });
     }
