@@ -176,50 +176,24 @@ void MatchingBuilder::match_ball(const std::vector<FaceId>& kept, const std::vec
 
 // Swaps the flip of one step of an augmenting path settles (see augment_fewest_swaps()): x takes h
 // as its matched edge, y (across h) too; x's previous partner keeps the edge it took before.
-// Faces are read as three bits of crossed edges (as pattern_cost()): swap_test() on them.
+// Counted by swap_test() on the crossed edges before and after, around x and y only.
 int MatchingBuilder::step_swaps(FaceId x, HalfedgeId h, bool x_is_root, bool y_is_end) const {
     const HalfedgeId t = mesh_.twin(h);
     const FaceId y = Mesh::face(t);
-    HalfedgeId yp_in = kNone;  // the edge x's previous partner takes
-    if (!x_is_root) yp_in = mesh_.twin(aug_unmatched_[x]);
-    auto old_bits = [&](FaceId f) {
-        uint32_t b = 0;
-        for (uint32_t k = 0; k < 3; ++k) {
-            const HalfedgeId a = Mesh::halfedge(f, k);
-            b |= static_cast<uint32_t>(passable(a) && !matched_[a]) << k;
-        }
-        return b;
-    };
-    auto taking = [&](FaceId f, HalfedgeId m) {
-        uint32_t b = 0;
-        for (uint32_t k = 0; k < 3; ++k) {
-            const HalfedgeId a = Mesh::halfedge(f, k);
-            b |= static_cast<uint32_t>(passable(a) && a != m) << k;
-        }
-        return b;
-    };
-    const FaceId yp = yp_in == kNone ? FaceId(kNone) : Mesh::face(yp_in);
-    const uint32_t x_new = taking(x, h), y_new = taking(y, t), yp_new = yp_in == kNone ? 0 : taking(yp, yp_in);
-    auto new_bits = [&](FaceId f) { return f == x ? x_new : f == y ? y_new : f == yp ? yp_new : old_bits(f); };
-    static constexpr uint8_t kOnes[8] = {0, 1, 1, 2, 1, 2, 2, 3};
-    // 1 if crossed half-edge a needs a swap with its faces' bits given by bits().
-    auto sw = [&](HalfedgeId a, const auto& bits) {
+    const HalfedgeId yp_in = x_is_root ? kNone : mesh_.twin(aug_unmatched_[x]);  // x's previous partner's matched edge
+    const FaceId yp = x_is_root ? FaceId(kNone) : Mesh::face(yp_in);
+    auto old_crossed = [&](HalfedgeId a) { return passable(a) && !matched_[a]; };
+    auto new_crossed = [&](HalfedgeId a) {
         const FaceId f = Mesh::face(a);
-        const uint32_t bf = bits(f);
-        const uint32_t i = Mesh::index_in_face(a);
-        if (!((bf >> i) & 1) || kOnes[bf] + vlink_[f] != 2) return 0;
-        const HalfedgeId at = mesh_.twin(a);
-        const FaceId g = Mesh::face(at);
-        const uint32_t bg = bits(g);
-        if (kOnes[bg] + vlink_[g] != 2) return 0;
-        const uint32_t j = Mesh::index_in_face(at);
-        return static_cast<int>(((bf >> ((i + 2) % 3)) & 1) == ((bg >> ((j + 1) % 3)) & 1));
+        const HalfedgeId m = f == x ? h : f == y ? t : f == yp ? yp_in : HalfedgeId(kNone);
+        return m == kNone ? old_crossed(a) : passable(a) && a != m;
     };
-    int d = -sw(h, old_bits);
+    auto sw = [&](HalfedgeId a, const auto& crossed) { return crossed(a) ? swap_test(a, crossed) : 0; };
+    int d = -sw(h, old_crossed);
     for (HalfedgeId a : sides(x))
-        if (a != h && passable(a)) d += sw(a, new_bits) - sw(a, old_bits);
+        if (a != h && passable(a)) d += sw(a, new_crossed) - sw(a, old_crossed);
     for (HalfedgeId a : sides(y))
-        if (a != t && passable(a) && (y_is_end || !matched_[a])) d += sw(a, new_bits) - sw(a, old_bits);
+        if (a != t && passable(a) && (y_is_end || !matched_[a])) d += sw(a, new_crossed) - sw(a, old_crossed);
     return d;
 }
 
