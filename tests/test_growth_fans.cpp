@@ -79,4 +79,27 @@ TEST(GrowthCavityTest, AgreesWithTheWalkAroundTheVertex) {
     }
 }
 
+// The rim walks beside the bidirectional search (growth_classify.cpp) prove a face safe when the
+// rim loops at its two ends differ; validate_each_split checks each such answer by a full search.
+// Shapes whose regions keep many loops far apart: rows of holes, holes everywhere, genus, walls.
+TEST(GrowthCavityTest, RimWalksAgreeWithTheFullSearch) {
+    std::vector<std::pair<std::string, WalledMesh>> cases;
+    cases.emplace_back("make_disk_with_holes(1000, 1)", WalledMesh{make_disk_with_holes(1000, 1), {}});
+    cases.emplace_back("make_disk_with_holes(40, 3)", WalledMesh{make_disk_with_holes(40, 3), {}});
+    cases.emplace_back("make_genus_surface(12, 3)", WalledMesh{make_genus_surface(12, 3), {}});
+    for (AwkwardFamily family : {AwkwardFamily::ManyHoles, AwkwardFamily::HoleCorridors, AwkwardFamily::SerpentineWalls})
+        cases.emplace_back(std::string(awkward_family_name(family)) + " at 6000", make_awkward(family, 6000));
+    for (const auto& [name, m] : cases) {
+        StripOptions o;
+        o.engine = StripEngine::Growth;
+        o.validate_each_split = true;
+        o.constraint_edges = as_constraints(polyline_edges(m.walls));
+        expect_verified(m.soup, o, name);
+        const auto nv = static_cast<uint32_t>(m.soup.points.size());
+        o.source = VertexId(nv / 3);
+        o.target = VertexId(2 * nv / 3);
+        expect_verified(m.soup, o, name + " source " + std::to_string(nv / 3) + " target " + std::to_string(2 * nv / 3));
+    }
+}
+
 }  // namespace

@@ -138,7 +138,22 @@ private:
     /// What a bidirectional search found: the sides met (a and b stay connected without n), the
     /// island of a or of b ran out first (it is in side_[0] or side_[1]), or the budget ran out.
     enum class SearchOutcome : uint8_t { Met, IslandOfA, IslandOfB, OverBudget };
-    SearchOutcome bidirectional_search(FaceId n, FaceId a, FaceId b, RegionId r, size_t budget = SIZE_MAX);
+    /// choose_safe()'s first search of each candidate: faces popped at most.
+    static constexpr size_t kFirstBudget = 256;
+    /// n's open neighbours across ha and hb; `rims`: walk the rim loops beside the search.
+    SearchOutcome bidirectional_search(FaceId n, HalfedgeId ha, HalfedgeId hb, RegionId r, size_t budget = SIZE_MAX, bool rims = true);
+    /// A walk along one rim loop of a region (the half-edges of its faces whose face across is
+    /// not open), one rotation step at a time: `at` is the last rim half-edge reached, `rot` the
+    /// half-edge the rotation around to(at) has reached (kNone right after `at`).
+    struct RimWalk {
+        HalfedgeId start, at, rot;
+        bool on = false;
+    };
+    /// One rotation step of w; true when it reached the next rim half-edge (then in w.at).
+    bool rim_step(RimWalk& w, RegionId r) const;
+    /// The rim walks beside the search (bidirectional_search()): true when they prove that n's
+    /// third edge hc and its vertex v (between ha and hb) lie on different rim loops.
+    bool rims_differ(RimWalk (&w)[2], FaceId n, VertexId v, HalfedgeId hc, RegionId r) const;
 
     /// The faces grow() may take next after t: up to three, in the order they are tried.
     struct Candidates {

@@ -54,7 +54,6 @@ uint32_t Builder::choose_safe(const Candidates& c, FaceId t, RegionId region, Cl
     // per step, so a long search is never spent on a face we might not take). The cheap
     // tests of a candidate run only when the ones before it are not safe (a cavity test
     // around a high-valence vertex is not O(1) either).
-    constexpr size_t kFirstBudget = 256;
     for (uint32_t i = 0; i < considered && chosen == kNone; ++i) {
         cls[i] = classify_local(c.face[c.order[i]], t, region);
         if (cls[i].kind == Kind::Unknown) resolve(cls[i], c.face[c.order[i]], region, kFirstBudget);

@@ -552,6 +552,8 @@ const char* awkward_family_name(AwkwardFamily family) noexcept {
             return "closed_cone";
         case AwkwardFamily::SpikedComb:
             return "spiked_comb";
+        case AwkwardFamily::HoleLadder:
+            return "hole_ladder";
     }
     return "unknown";
 }
@@ -590,6 +592,8 @@ WalledMesh make_awkward(AwkwardFamily family, uint32_t triangles) {
             return {make_cone(std::max(3u, rounded(f / 4)), true), {}};  // F ~ 4k
         case AwkwardFamily::SpikedComb:
             return {make_spiked_comb(std::max(1u, rounded(f / 15)), 5), {}};  // F = 15 teeth
+        case AwkwardFamily::HoleLadder:
+            return {make_disk_with_holes(rounded((f - 6) / 10), 1), {}};  // F = 10k + 6
     }
     throw RequestError("generator: unknown awkward family");
 }
