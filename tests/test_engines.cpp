@@ -525,3 +525,19 @@ TEST_P(AwkwardSizes, FamiliesCostAtMostTenPercent) {
         }
     }
 }
+
+// Thin tori: the zigzag bands around the short circumference are thousands of loops, each joined
+// at two swaps; the greedy's seed turns the pattern along the torus (seed_direction(), docs/
+// algorithm.md step 5) and the strip needs no swap beyond a few joins. Either way round.
+TEST(MatchingPattern, ThinToriRunAlongTheirLength) {
+    for (const auto& [around, along] : {std::pair{8u, 2000u}, std::pair{5u, 3000u}, std::pair{16u, 1000u}, std::pair{2000u, 8u}}) {
+        const TriangleSoup s = make_torus(around, along);
+        StripOptions o;
+        o.engine = StripEngine::Matching;
+        const auto c = strip_and_verify(s, o);
+        const std::string what = "make_torus(" + std::to_string(around) + ", " + std::to_string(along) + ")";
+        ASSERT_TRUE(c.report.ok()) << what << "\n" << describe(c);
+        EXPECT_EQ(c.result.stats.splits, 0u) << what;
+        EXPECT_LE(c.result.stats.swaps, 2 * std::min(around, along) + 2) << what << ": about two swaps a loop, one loop per band along";
+    }
+}

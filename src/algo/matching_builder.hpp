@@ -132,6 +132,16 @@ private:
     };
     static constexpr uint32_t kParallelPattern = 16384;  ///< faces from which the two greedy orders run at once
     void match_patterned(bool mates, Pattern& p);
+    HalfedgeId seed_direction(FaceId s, size_t& credit) const;
+    /// A zigzag band of the pattern from a seed: its faces, whether it closed into a loop, and
+    /// whether it met one of its faces again (crossed itself).
+    struct Band {
+        uint32_t faces = 1;
+        bool loop = false;
+        bool crossed = false;
+    };
+    Band follow_band(FaceId s, HalfedgeId m) const;
+    static constexpr uint32_t kBandProbe = 4096;  ///< faces a seed's band is followed at most
     void choose_pattern();
     [[nodiscard]] long pattern_cost(const Pattern& p) const;
     bool augment_from(FaceId u, IdVector<FaceId, uint32_t>& stamp, uint32_t mark, size_t budget);
