@@ -20,6 +20,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     fuzzcheck::Request req;
     fuzzcheck::decode_options(in, soup, req);
     req.strip.engine = fuzzcheck::decode_engine(in, size);
+    req.strip.polish = fuzzcheck::decode_polish(in, size);
     if (std::getenv("SINGLESTRIP_FUZZ_VERBOSE")) fuzzcheck::dump(soup, req);
     if (auto p = fuzzcheck::check_pipeline(std::move(soup), req); !p.empty()) fuzzcheck::finding(p);
     return 0;

@@ -3,7 +3,7 @@
 //   singlestrip.strip(vertices, faces, constraints=None, source=None, target=None, cycles=False,
 //                     seed_face=None, greedy=True, orient=False, name="input",
 //                     engine="matching", repair=False, weld=False, join="degenerate",
-//                     attributes=None, blend=None) -> dict
+//                     attributes=None, blend=None, polish=False) -> dict
 //   singlestrip.verify(vertices, faces, result, constraints=None, source=None, target=None,
 //                      repair=False, weld=False, orient=False, attributes=None, blend=None) -> dict
 //   singlestrip.decode_strip(indices) -> (T, 3) uint32 array
@@ -325,7 +325,7 @@ py::object read_mesh(const std::string& path, const py::object& format, bool att
 py::dict strip(const py::object& vertices, const py::object& faces, const py::object& constraints, const py::object& source,
                const py::object& target, bool cycles, const py::object& seed_face, bool greedy, bool orient, const std::string& name,
                const std::string& engine, bool repair, bool weld, const std::string& join, const py::object& attributes,
-               const py::object& blend) {
+               const py::object& blend, bool polish) {
     ss::TriangleSoup soup;
     soup.points = to_points(vertices, name.c_str());
     soup.triangles = to_faces(faces, soup.points.size(), name.c_str());
@@ -334,6 +334,7 @@ py::dict strip(const py::object& vertices, const py::object& faces, const py::ob
     ss::PipelineOptions opt;
     opt.strip.engine = to_engine(engine);
     opt.strip.greedy = greedy;
+    opt.strip.polish = polish;
     opt.strip.source = to_vertex_id(source, "source");
     opt.strip.target = to_vertex_id(target, "target");
     opt.strip.seed_face = to_face_id(seed_face, "seed_face");
@@ -444,6 +445,7 @@ PYBIND11_MODULE(singlestrip, m) {
           py::arg("target") = py::none(), py::arg("cycles") = false, py::arg("seed_face") = py::none(), py::arg("greedy") = true,
           py::arg("orient") = false, py::arg("name") = "input", py::arg("engine") = "matching", py::arg("repair") = false,
           py::arg("weld") = false, py::arg("join") = "degenerate", py::arg("attributes") = py::none(), py::arg("blend") = py::none(),
+          py::arg("polish") = false,
           R"doc(Turn a triangle mesh into ONE triangle strip per edge-connected component.
 
 vertices: (n, 3) floats; faces: (m, 3) vertex indices (0-based), consistently oriented
@@ -453,6 +455,8 @@ source/target: vertex ids the first/last strip face must touch. seed_face: input
 cycles: also compute the fundamental cycles (face chains into the output faces).
 name: prefix of error messages (the CLI uses the file name).
 engine: "matching" (default) or "growth" (the paper's builder, for comparison).
+polish: matching engine, spend two to three times the strip time on fewer swaps (about 1% fewer
+GL indices; report["polished"] counts the faces rematched).
 repair: weld, drop degenerate/duplicate faces, cut non-manifold and non-orientable parts apart,
 orient (docs/repair.md; report["repair"] says what changed). weld: only merge equal vertices.
 join: "degenerate" (default) or "restart" (0xFFFFFFFF) between the strips of several components.

@@ -450,6 +450,7 @@ Drawable read_result(const RenderArgs& a) {
 Drawable strip_input(const RenderArgs& a) {
     PipelineOptions o;
     o.strip.engine = *a.engine;
+    o.strip.polish = a.polish;
     if (a.source) o.strip.source = VertexId(from_index_base(*a.source, a.index_base, "--source"));
     if (a.target) o.strip.target = VertexId(from_index_base(*a.target, a.index_base, "--target"));
     o.constraints_file = a.constraints;

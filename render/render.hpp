@@ -117,6 +117,7 @@ struct RenderArgs {
     /// (pipeline.hpp), `constraints`, `source` and `target` being the strip's request too.
     std::optional<StripEngine> engine;
     bool with_cycles = false;  ///< with `engine`: draw the computed cycles
+    bool polish = false;       ///< with `engine`: StripOptions::polish
     bool route = false;        ///< draw the strip's route (route.hpp)
     /// Vertex numbers in `constraints`, `source`, `target` start at this (0 or 1).
     uint32_t index_base = 0;

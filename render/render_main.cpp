@@ -32,6 +32,7 @@ void add_options(CLI::App& app, ss::render::RenderArgs& ra) {
         },
         "matching|growth"));
     app.add_flag("--with-cycles", ra.with_cycles, "With --engine: compute the fundamental cycles and draw them");
+    app.add_flag("--polish", ra.polish, "With --engine matching: fewer swaps for more time (as `singlestrip strip --polish`)");
     app.add_option("--constraints", ra.constraints, "Constraint polylines to draw (black)");
     app.add_option("--source", ra.source, "Vertex marked green (strip start)");
     app.add_option("--target", ra.target, "Vertex marked red (strip end)");

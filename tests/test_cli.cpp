@@ -268,6 +268,25 @@ TEST(CliReal, FandiskStripsAndVerifies) {
     EXPECT_EQ(bv.code, 0) << bv.out;
 }
 
+// --polish: fewer GL indices than the default on fandisk, the report says so, verify accepts it.
+TEST(CliReal, PolishGivesFewerIndices) {
+    const std::string fandisk = singlestrip::test::cgal_mesh_path("fandisk.off");
+    if (fandisk.empty()) GTEST_SKIP() << "libcgal-demo data not available";
+    Scratch s("polish");
+    ASSERT_EQ(cli("strip " + q(fandisk) + " -o " + q(s / "d.ply") + " --report " + q(s / "d.json")).code, 0);
+    CliRun r =
+        cli("strip " + q(fandisk) + " --polish -o " + q(s / "p.ply") + " --indices " + q(s / "p.txt") + " --report " + q(s / "p.json"));
+    ASSERT_EQ(r.code, 0) << r.out;
+    const auto plain = nlohmann::json::parse(slurp(s / "d.json")), polished = nlohmann::json::parse(slurp(s / "p.json"));
+    EXPECT_EQ(plain["options"]["polish"], false);
+    EXPECT_EQ(polished["options"]["polish"], true);
+    EXPECT_GT(polished["polished"].get<int>(), 0);
+    EXPECT_FALSE(plain.contains("polished"));
+    EXPECT_LT(polished["strip_indices"].get<int>(), plain["strip_indices"].get<int>());
+    CliRun v = cli("verify " + q(fandisk) + " " + q(s / "p.ply") + " --indices " + q(s / "p.txt"));
+    EXPECT_EQ(v.code, 0) << v.out;
+}
+
 TEST(CliReal, RepairStripsARefusedMeshAndVerifyReplaysIt) {
     const std::string pig = singlestrip::test::cgal_mesh_path("pig.stl");
     if (pig.empty()) GTEST_SKIP() << "libcgal-demo data not available";

@@ -177,6 +177,7 @@ std::string describe_case(const Case& c, int index) {
        << " V=" << c.soup.points.size();
     if (c.options.seed_face) os << "; seed face " << c.options.seed_face->idx();
     if (!c.options.greedy) os << "; no greedy";
+    if (c.options.polish) os << "; polish";
     if (c.options.source) os << "; source " << c.options.source->idx();
     if (c.options.target) os << "; target " << c.options.target->idx();
     if (!c.walls.empty()) os << "; constraint polylines:" << polylines_text(c.walls);
@@ -326,6 +327,7 @@ Case random_case(std::mt19937_64& rng, StripEngine engine, uint32_t scale) {
         }
     }
     c.options.constraint_edges = as_constraints(polyline_edges(c.walls));
+    c.options.polish = rng() % 4 == 0;  // drawn last: the cases above stay as they were
     return c;
 }
 

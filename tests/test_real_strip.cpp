@@ -95,6 +95,25 @@ TEST(MatchingEngineReal, ShortFacesBehindChainsCostLittle) {
     }
 }
 
+// StripOptions::polish: every strip verified (the matching checked after every split), faces
+// rematched on each mesh, and fewer GL indices than without on each (measured: 0.5-2.5% fewer).
+TEST(MatchingEngineReal, PolishRemovesSwaps) {
+    for (const char* name : {"fandisk.off", "head.off", "cow.off", "turbine.off", "ellipe0.003.off"}) {
+        const std::string p = require(name);
+        if (p.empty()) GTEST_SKIP() << "libcgal-demo data not available";
+        const TriangleSoup soup = load(p);
+        StripOptions o;
+        o.engine = StripEngine::Matching;
+        const auto plain = strip_and_verify(soup, o);
+        o.polish = true;
+        o.validate_each_split = true;
+        const auto polished = strip_and_verify(soup, o);
+        ASSERT_TRUE(polished.report.ok()) << name << ": " << describe(polished);
+        EXPECT_GT(polished.result.stats.polished, 0u) << name;
+        EXPECT_LT(polished.indices.size(), plain.indices.size()) << name;
+    }
+}
+
 TEST_P(RealMeshes, TopologyOfNamedMeshes) {
     for (const test::KnownTopology& c : test::known_topologies()) {
         const std::string p = require(c.name);

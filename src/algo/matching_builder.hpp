@@ -172,6 +172,17 @@ private:
     std::vector<FaceId> bl_touched_, bl_queue_, bl_merge_;
     uint32_t bl_search_ = 0, bl_mark_ = 0;
     void settle_leftovers();
+    // Opt-in polishing of a perfect matching (matching_polish.cpp, StripOptions::polish).
+    struct PolishScratch {
+        IdVector<FaceId, uint32_t> stamp, in_set;
+        uint32_t mark = 0, set_mark = 0;
+        std::vector<FaceId> faces;                             ///< the path's faces and their neighbours
+        std::vector<std::pair<HalfedgeId, HalfedgeId>> steps;  ///< (matched by the path, unmatched by it)
+    };
+    static constexpr size_t kPolishBudget = 64;  ///< faces a polishing search reaches at most
+    void polish();
+    bool polish_at(FaceId f, HalfedgeId m, PolishScratch& s);
+    [[nodiscard]] int swaps_among(const std::vector<FaceId>& faces, const IdVector<FaceId, uint32_t>& in_set, uint32_t mark) const;
     void release_repair_scratch();
     void check_matching() const;
     void repair_short(std::vector<FaceId>& short_faces);

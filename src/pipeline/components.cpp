@@ -152,6 +152,7 @@ void add_stats(StripStats& total, const StripStats& s) {
     total.parity_splits += s.parity_splits;
     total.unmatched += s.unmatched;
     total.absorbed += s.absorbed;
+    total.polished += s.polished;
     total.growth_fallback = total.growth_fallback || s.growth_fallback;
 }
 

@@ -13,6 +13,7 @@ using json = nlohmann::json;
 json options_json(const PipelineOptions& o) {
     json j = {{"engine", engine_name(o.strip.engine)},
               {"greedy", o.strip.greedy},
+              {"polish", o.strip.polish},
               {"orient", o.orient},
               {"constraint_edges", o.strip.constraint_edges.size()}};
     j["repair"] = o.repair;
@@ -70,6 +71,7 @@ void add_counts(json& j, const PipelineResult& r) {
     j["boundary_loops"] = st.boundary_loops;
     j["fundamental_triangles"] = st.fundamental_triangles;
     j["deferred_regions"] = st.deferred_regions;
+    if (r.options.strip.polish) j["polished"] = st.polished;
     j["indices_per_triangle"] = indices_per_triangle(st, r.indices.size());
     j["extra_percent"] = extra_percent(st);
     j["strips"] = r.components.size();

@@ -229,6 +229,18 @@ def test_engine_keyword(engine):
     assert r["report"]["options"]["engine"] == engine
 
 
+def test_polish_keyword():
+    v, f = torus(24, 16)
+    plain = ss.strip(v, f)
+    r = ss.strip(v, f, polish=True)
+    check_result(v, f, r)
+    assert r["report"]["options"]["polish"] is True
+    assert plain["report"]["options"]["polish"] is False
+    assert r["report"]["polished"] >= 0
+    assert "polished" not in plain["report"]
+    assert len(r["strip"]) <= len(plain["strip"])
+
+
 def test_default_engine_is_matching():
     v, f = grid(3)
     assert ss.strip(v, f)["report"]["options"]["engine"] == "matching"
