@@ -211,6 +211,8 @@ private:
     using BallVertex = Id<struct BallVertexTag>;  ///< a vertex of the graph a ball's search builds
     IdVector<FaceId, BallVertex> ball_local_;
     IdVector<FaceId, uint8_t> ball_whole_;  ///< faces of a ball that was its whole component
+    size_t ball_reached_ = 0;               ///< faces the last repair_ball() gathered
+    static constexpr size_t kBallWork = 2;  ///< one-by-one balls: faces gathered per mesh face at most
     void label_structures();
     void merge_all();
     void merge_by_cost();

@@ -77,8 +77,14 @@ bool MatchingBuilder::repair_in_balls(std::vector<FaceId>& short_faces, size_t b
         // so the component's other short faces need no ball of their own.
         IdVector<FaceId, uint8_t>& whole = ball_whole_;
         whole.assign(mesh_.num_faces(), 0);
+        // The balls together reach at most kBallWork faces per face of the mesh: on a disk with a
+        // hole every 200 faces, 42 balls of 8192 faces (of 9639) found nothing in 53 ms.
+        size_t work = 0;
         for (FaceId s : std::vector<FaceId>(short_faces))
-            if (quota_[s] > 0 && !whole[s]) truncated |= repair_ball({s}, ball, &whole);
+            if (quota_[s] > 0 && !whole[s] && work < kBallWork * size_t{mesh_.num_faces()}) {
+                truncated |= repair_ball({s}, ball, &whole);
+                work += ball_reached_;
+            }
     }
     std::erase_if(short_faces, [&](FaceId f) { return quota_[f] == 0; });
     return truncated;
@@ -105,6 +111,7 @@ bool MatchingBuilder::repair_ball(const std::vector<FaceId>& short_faces, size_t
         faces.insert(faces.end(), queue.begin(), queue.end());
         truncated |= queue.size() >= ball;
     }
+    ball_reached_ = faces.size();
     if (whole && !truncated)
         for (FaceId f : faces) (*whole)[f] = 1;
     // Keep faces that take matched edges and whose partners are all inside too. A pinned face
