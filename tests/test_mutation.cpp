@@ -435,6 +435,20 @@ TEST(Reproducers, PipelineReproducersVerify) {
     }
 }
 
+// F29: --polish with source = target on a wavy grid, where the repair leaves a pinned face short
+// (pipeline_polish_pinned_face_short.fuzz_pipeline decoded; the fuzzer's options: no greedy).
+TEST(Reproducers, PolishWithAPinnedFaceShort) {
+    const fs::path dir = fs::path(SINGLESTRIP_SOURCE_DIR) / "fuzz" / "repro";
+    TriangleSoup soup = read_mesh_file((dir / "pipeline_polish_pinned_face_short.off").string());
+    fuzzcheck::Request req;
+    req.strip.greedy = false;
+    req.strip.polish = true;
+    req.strip.source = req.strip.target = VertexId(42);
+    fuzzcheck::Outcome outcome;
+    EXPECT_EQ(fuzzcheck::check_pipeline(std::move(soup), req, &outcome), "");
+    EXPECT_EQ(outcome, fuzzcheck::Outcome::Stripped);
+}
+
 // ---- F5: the verifier and degenerate input faces --------------------------------------------
 
 namespace {

@@ -66,9 +66,12 @@ bool MatchingBuilder::polish_at(FaceId f, HalfedgeId m, PolishScratch& s) {
 }
 
 // Every face with a swap, once, in face order: O(kPolishBudget) each, O(F) in all. Only on a
-// perfect matching (no face short): a path must end at the unmatched mate.
+// perfect matching (no face short, pinned faces included: the repair can leave a pinned face
+// wanting its second matched edge), so that a path must end at the unmatched mate.
 void MatchingBuilder::polish() {
     const uint32_t nf = mesh_.num_faces();
+    for (FaceId f : mesh_.faces())
+        if (quota_[f] > 0) return;
     PolishScratch s;
     s.stamp.assign(nf, 0), s.in_set.assign(nf, 0);
     aug_prev_.assign(nf, kNone), aug_matched_.assign(nf, kNone), aug_unmatched_.assign(nf, kNone);
