@@ -212,6 +212,7 @@ private:
     IdVector<FaceId, BallVertex> ball_local_;
     IdVector<FaceId, uint8_t> ball_whole_;  ///< faces of a ball that was its whole component
     size_t ball_reached_ = 0;               ///< faces the last repair_ball() gathered
+    std::vector<FaceId> ball_short_;        ///< faces a ball's matching left short that were not
     static constexpr size_t kBallWork = 2;  ///< one-by-one balls: faces gathered per mesh face at most
     void label_structures();
     void merge_all();

@@ -86,6 +86,10 @@ bool MatchingBuilder::repair_in_balls(std::vector<FaceId>& short_faces, size_t b
                 work += ball_reached_;
             }
     }
+    // A maximum matching of the ball may leave a face short that was not (a pinned face wants
+    // two matched edges, and gives one up to match two short faces): it is short from now on.
+    short_faces.insert(short_faces.end(), ball_short_.begin(), ball_short_.end());
+    ball_short_.clear();
     std::erase_if(short_faces, [&](FaceId f) { return quota_[f] == 0; });
     return truncated;
 }
@@ -178,7 +182,11 @@ void MatchingBuilder::match_ball(const std::vector<FaceId>& kept, const std::vec
                 break;
             }
     }
-    for (FaceId f : kept) quota_[f] = static_cast<uint8_t>(std::max(0, want(f) - num_matched(f)));
+    for (FaceId f : kept) {
+        const uint8_t before = quota_[f];
+        quota_[f] = static_cast<uint8_t>(std::max(0, want(f) - num_matched(f)));
+        if (before == 0 && quota_[f] > 0) ball_short_.push_back(f);
+    }
 }
 
 // Swaps the flip of one step of an augmenting path settles (see augment_fewest_swaps()): x takes h
@@ -417,7 +425,7 @@ void MatchingBuilder::release_repair_scratch() {
     release(aug_prev_), release(aug_matched_), release(aug_unmatched_), release(aug_queue_), release(aug_heap_);
     release(bl_stamp_), release(bl_seen_), release(bl_base_), release(bl_parent_), release(bl_label_);
     release(bl_touched_), release(bl_queue_), release(bl_merge_);
-    release(ball_local_), release(ball_whole_);
+    release(ball_local_), release(ball_whole_), release(ball_short_);
 }
 
 // The matching's invariant: a face has exactly its wanted matched edges less its quota, all
