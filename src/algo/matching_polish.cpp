@@ -41,6 +41,7 @@ bool MatchingBuilder::polish_at(FaceId f, HalfedgeId m, PolishScratch& s) {
     HalfedgeId gh = kNone;
     for (HalfedgeId a : sides(g))
         if (matched_[a]) gh = a;
+    if (gh == m) return false;  // the path is m itself: the matching is as it was
     s.steps.push_back({gh, kNone});
     for (FaceId z = across(gh); z != f; z = aug_prev_[z]) {
         s.faces.push_back(z), s.faces.push_back(Mesh::face(aug_matched_[z]));
@@ -66,8 +67,8 @@ bool MatchingBuilder::polish_at(FaceId f, HalfedgeId m, PolishScratch& s) {
 }
 
 // Every face with a swap, once, in face order: O(kPolishBudget) each, O(F) in all. Only on a
-// perfect matching (no face short, pinned faces included: the repair can leave a pinned face
-// wanting its second matched edge), so that a path must end at the unmatched mate.
+// perfect matching (no face short, read from the quotas themselves: F29 came from trusting the
+// repair's list), so that a path must end at the unmatched mate.
 void MatchingBuilder::polish() {
     const uint32_t nf = mesh_.num_faces();
     for (FaceId f : mesh_.faces())
