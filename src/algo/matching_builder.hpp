@@ -132,6 +132,13 @@ private:
     };
     static constexpr uint32_t kParallelPattern = 16384;  ///< faces from which the two greedy orders run at once
     void match_patterned(bool mates, Pattern& p);
+    /// The turn pattern's rule across crossed edge e of a face whose matched edge is m: the face
+    /// across e should match the edge that touches to(e) if m touches from(e), and the other way
+    /// round (then the two turns alternate). kNone if m is neither of e's neighbours in its face.
+    [[nodiscard]] HalfedgeId alternate(HalfedgeId m, HalfedgeId e) const {
+        const HalfedgeId t = mesh_.twin(e);
+        return m == Mesh::prev(e) ? Mesh::prev(t) : m == Mesh::next(e) ? Mesh::next(t) : HalfedgeId(kNone);
+    }
     HalfedgeId seed_direction(FaceId s, size_t& credit) const;
     /// A zigzag band of the pattern from a seed: its faces, whether it closed into a loop, and
     /// whether it met one of its faces again (crossed itself).

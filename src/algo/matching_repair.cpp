@@ -404,7 +404,7 @@ void MatchingBuilder::settle_leftovers() {
         stats_.parity_splits += 1;
         if (short_faces.size() >= before) break;
     }
-    if (opt_.polish && short_faces.empty()) polish();
+    if (opt_.polish) polish();
     if (opt_.validate_each_split) check_matching();
     for (HalfedgeId h : mesh_.halfedges()) used_[h] = passable(h) && !matched_[h];
     for (FaceId f : short_faces)

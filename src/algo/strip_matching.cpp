@@ -354,11 +354,7 @@ void MatchingBuilder::match_patterned(bool mates, Pattern& p) {
                 if (seen[g]) continue;
                 seen[g] = 1;
                 queue.push_back(g);
-                const HalfedgeId t = mesh_.twin(e);
-                if (m == Mesh::prev(e))
-                    pref[g] = Mesh::prev(t);  // m touches from(e): g's should touch to(e)
-                else if (m == Mesh::next(e))
-                    pref[g] = Mesh::next(t);  // and the other way round
+                if (const HalfedgeId a = alternate(m, e); a != kNone) pref[g] = a;
             }
         }
     }
@@ -401,7 +397,7 @@ MatchingBuilder::Band MatchingBuilder::follow_band(FaceId s, HalfedgeId m) const
             if (g == s) return Band{band.faces, true, band.crossed};
             if (degree(g) != 3) break;
             band.crossed |= !seen.insert(g.idx()).second;
-            mf = mf == Mesh::prev(e) ? Mesh::prev(t) : Mesh::next(t);  // mf touches from(e): g's touches to(e)
+            mf = alternate(mf, e);
             e = mf == Mesh::next(t) ? Mesh::prev(t) : Mesh::next(t);
             ++band.faces;
         }
