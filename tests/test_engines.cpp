@@ -520,10 +520,92 @@ TEST_P(AwkwardSizes, FamiliesCostAtMostTenPercent) {
             // ends must be split: at least 22 triangles per tooth, teeth = F / 15.
             EXPECT_LE(extra, 100.0 * 22 / 15 + 1) << "22 per tooth";
         } else if (family == AwkwardFamily::HoleLadder) {
-            // Not a bound: what both engines need today, two splits per hole (docs/algorithm.md).
+            // About the least any single strip needs (SplitBounds.HoleLadder below): 2 per hole.
             EXPECT_LE(extra, 100.0 * 4 * (faces / 10) / faces + 1) << "4 per hole, holes = F / 10";
         } else {
             EXPECT_LE(extra, 10.0) << awkward_family_name(family);
+        }
+    }
+}
+
+namespace {
+
+// True if the dual graph of `mesh` (faces, linked across interior edges) has a Hamiltonian
+// path: the faces can form one strip. Depth-first, for small meshes only.
+bool one_strip_possible(const Mesh& mesh) {
+    const uint32_t n = mesh.num_faces();
+    std::vector<std::vector<uint32_t>> adj(n);
+    for (FaceId f : mesh.faces())
+        for (uint32_t k = 0; k < 3; ++k)
+            if (const HalfedgeId h = Mesh::halfedge(f, k); !mesh.is_boundary(h)) adj[f.idx()].push_back(mesh.neighbor(h).idx());
+    const auto ends = std::count_if(adj.begin(), adj.end(), [](const auto& a) { return a.size() == 1; });
+    if (ends > 2) return false;
+    std::vector<char> seen(n, 0);
+    auto grow = [&](auto&& self, uint32_t v, uint32_t depth) -> bool {
+        if (depth == n) return true;
+        for (uint32_t w : adj[v])
+            if (!seen[w]) {
+                seen[w] = 1;
+                if (self(self, w, depth + 1)) return true;
+                seen[w] = 0;
+            }
+        return false;
+    };
+    for (uint32_t s = 0; s < n; ++s) {
+        if (ends > 0 && adj[s].size() != 1) continue;  // a face with one neighbour must be an end
+        seen[s] = 1;
+        if (grow(grow, s, 1)) return true;
+        seen[s] = 0;
+    }
+    return false;
+}
+
+// The fewest midpoint splits of input edges after which `soup` strips as one, by trying every
+// set of `splits` edges for splits = 0, 1, ... up to `most`; most + 1 if none is enough.
+uint32_t fewest_splits_for_one_strip(const TriangleSoup& soup, uint32_t most) {
+    const Mesh base = Mesh::from_soup(soup);
+    std::vector<HalfedgeId> edges;
+    for (HalfedgeId h : base.halfedges())
+        if (!base.is_boundary(h) && h < base.twin(h)) edges.push_back(h);
+    for (uint32_t splits = 0; splits <= most; ++splits) {
+        std::vector<size_t> pick(splits);
+        auto any = [&](auto&& self, uint32_t i, size_t from) -> bool {
+            if (i == splits) {
+                Mesh m(base);
+                for (size_t e : pick) {
+                    // An earlier split may have renumbered this face's edges: still a valid split.
+                    if (m.is_boundary(edges[e])) return false;
+                    m.split_edge(edges[e]);
+                }
+                m.validate();
+                return one_strip_possible(m);
+            }
+            for (size_t j = from; j < edges.size(); ++j)
+                if (pick[i] = j; self(self, i + 1, j + 1)) return true;
+            return false;
+        };
+        if (any(any, 0, 0)) return splits;
+    }
+    return most + 1;
+}
+
+}  // namespace
+
+// A row of k one-cell holes has no bridge, yet any single strip needs about two splits per
+// hole (docs/algorithm.md, step 3): exhaustively 2k - 2 for small k. Both engines stay within
+// two splits of it.
+TEST(SplitBounds, HoleLadderNeedsTwoSplitsPerInnerHole) {
+    for (uint32_t k : {2u, 3u}) {
+        const TriangleSoup soup = make_disk_with_holes(k, 1);
+        const uint32_t least = fewest_splits_for_one_strip(soup, 2 * k - 2);
+        EXPECT_EQ(least, 2 * k - 2) << "k = " << k;
+        for (StripEngine engine : {StripEngine::Matching, StripEngine::Growth}) {
+            StripOptions o;
+            o.engine = engine;
+            const auto c = strip_and_verify(soup, o);
+            ASSERT_TRUE(c.report.ok()) << describe(c);
+            EXPECT_GE(c.result.stats.splits, least) << "k = " << k;
+            EXPECT_LE(c.result.stats.splits, least + 2) << "k = " << k;
         }
     }
 }
