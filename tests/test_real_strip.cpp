@@ -97,8 +97,10 @@ TEST(MatchingEngineReal, ShortFacesBehindChainsCostLittle) {
 
 // StripOptions::polish: every strip verified (the matching checked after every split), faces
 // rematched on each mesh, and fewer GL indices than without on each (measured: 0.5-2.9% fewer).
+// The last two keep faces short (no 2-factor among their holes and ears): those sit out.
 TEST(MatchingEngineReal, PolishRemovesSwaps) {
-    for (const char* name : {"fandisk.off", "head.off", "cow.off", "turbine.off", "ellipe0.003.off"}) {
+    for (const char* name :
+         {"fandisk.off", "head.off", "cow.off", "turbine.off", "ellipe0.003.off", "elephant-with-holes.off", "b9_mesh.off"}) {
         const std::string p = require(name);
         if (p.empty()) GTEST_SKIP() << "libcgal-demo data not available";
         const TriangleSoup soup = load(p);

@@ -54,8 +54,8 @@ struct StripOptions {
     /// First strip face is incident to `source`, last to `target` (§5.2); input vertex indices.
     std::optional<VertexId> source;
     std::optional<VertexId> target;
-    /// Matching engine: after the matching is perfect, rematch each face that swaps by the path
-    /// that adds the fewest swaps, kept where it removes some (about 1% fewer GL indices on real
+    /// Matching engine: after the matching is settled, rematch each face that swaps by the path
+    /// that adds the fewest swaps (faces left short sit out), kept where it removes some (about 1% fewer GL indices on real
     /// meshes for two to three times the strip stage's time; docs/algorithm.md step 6). The growth
     /// builder ignores it.
     bool polish = false;

@@ -1,7 +1,8 @@
-// singlestrip — matching engine, opt-in (StripOptions::polish): fewer swaps in a perfect matching.
+// singlestrip — matching engine, opt-in (StripOptions::polish): fewer swaps in the settled matching.
 // For each face with a swap on one of its crossed edges, the face and its mate are unmatched and
 // matched again by the fewest-swap augmenting path (augment_fewest_swaps()); the new path is kept
 // only when the swaps counted on the faces around it drop. docs/algorithm.md, step 6.
+#include <utility>
 #include <vector>
 
 #include "matching_builder.hpp"
@@ -66,13 +67,14 @@ bool MatchingBuilder::polish_at(FaceId f, HalfedgeId m, PolishScratch& s) {
     return true;
 }
 
-// Every face with a swap, once, in face order: O(kPolishBudget) each, O(F) in all. Only on a
-// perfect matching (no face short, read from the quotas themselves: F29 came from trusting the
-// repair's list), so that a path must end at the unmatched mate.
+// Every face with a swap, once, in face order: O(kPolishBudget) each, O(F) in all.
 void MatchingBuilder::polish() {
     const uint32_t nf = mesh_.num_faces();
+    // Faces still short take no part: with their quotas hidden, every path must end at the
+    // unmatched mate (F29 came from a path that ended at another short face).
+    std::vector<std::pair<FaceId, uint8_t>> hidden;
     for (FaceId f : mesh_.faces())
-        if (quota_[f] > 0) return;
+        if (quota_[f] > 0) hidden.emplace_back(f, quota_[f]), quota_[f] = 0;
     PolishScratch s;
     s.stamp.assign(nf, 0), s.in_set.assign(nf, 0);
     aug_prev_.assign(nf, kNone), aug_matched_.assign(nf, kNone), aug_unmatched_.assign(nf, kNone);
@@ -88,6 +90,7 @@ void MatchingBuilder::polish() {
         if (swaps == 0 || m == kNone || vlink_[across(m)] || degree(across(m)) != 3) continue;
         if (polish_at(f, m, s)) ++stats_.polished;
     }
+    for (const auto& [f, q] : hidden) quota_[f] = q;
 }
 
 }  // namespace singlestrip::matching
