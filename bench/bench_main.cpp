@@ -319,7 +319,7 @@ int main(int argc, char** argv) {
 
     std::vector<Row> rows;
     for (size_t i = 0; i < specs.size(); ++i) {
-        const Spec& spec = specs[i];
+        Spec& spec = specs[i];
         progress("[" + std::to_string(i + 1) + "/" + std::to_string(specs.size()) + "] " + spec.name + " ");
         Row row{spec, {}, {}, {}, false};
         const auto t0 = Clock::now();
@@ -338,6 +338,7 @@ int main(int argc, char** argv) {
         row.ref = run_pod<Reference>([&] { return measure_reference(spec, std::max(3, spec.reps), cfg.budget); }, cfg);
         progress("r");
         if (row.ref.status <= 0 || row.ref.status >= 2) {
+            spec.has_cycles = row.ref.status == 0 && row.ref.cycle_rank > 0;
             const std::string out_path = (fs::path(tmp) / (spec.name + ".strip.ply")).string();
             for (int e = 0; e < kEngines; ++e) {
                 const auto te = Clock::now();
@@ -395,6 +396,13 @@ int main(int argc, char** argv) {
     if (!ok_awkward.empty()) {
         md << "### Awkward families: growth with size\n\n" << growth_table(ok_awkward) << '\n';
         md << "### Awkward families: time per stage\n\n" << time_table(ok_awkward, true) << '\n';
+    }
+    if (std::any_of(rows.begin(), rows.end(), [](const Row& r) { return r.eng[0].status == 0 && r.eng[0].cycles > 0; })) {
+        md << "### `--cycles`: the fundamental cycles beside the strip stage\n\n"
+              "compute_fundamental_cycles() on the strip of one more pass (each engine; the growth builder's own fundamental "
+              "triangles, the matching engine's by replay), and the peak memory of a read → write run without and with "
+              "`PipelineOptions::cycles`; meshes with cycles (2g + h − 1 > 0) of ≥ 10K triangles.\n\n"
+           << cycles_table(rows) << '\n';
     }
     if (!bad.empty()) {
         md << "### Skipped or failed inputs\n\nskipped = rejected by `read_mesh_file` or `prepare_soup` (with `orient`), as the "

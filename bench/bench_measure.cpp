@@ -277,7 +277,7 @@ void write_generated(const Spec& spec) {
 /// CLI's mmap threshold. In a child of its own: the threshold would slow the timed repetitions
 /// below (every large array a fresh mapping), and they hold the soup beside the mesh and a copy
 /// of the points, which the tool never does. 0 on failure.
-uint64_t tool_peak_kb(const std::string& path, const ss::StripOptions& strip) {
+uint64_t tool_peak_kb(const std::string& path, const ss::StripOptions& strip, bool cycles) {
     const std::string out = path + ".peak.ply";
     const pid_t pid = fork();
     if (pid < 0) return 0;
@@ -288,6 +288,7 @@ uint64_t tool_peak_kb(const std::string& path, const ss::StripOptions& strip) {
             ss::PipelineOptions o;
             o.strip = strip;
             o.orient = true;
+            o.cycles = cycles;
             o.release_intermediates = true;
             o.name = path;
             const ss::PipelineResult pr = ss::stripify(ss::read_mesh_file(path), o);
@@ -312,14 +313,14 @@ namespace {
 struct Pass {
     int status = 0;
     std::string message;
-    double read = 0, check = 0, adj = 0, build = 0, encode = 0;
-    uint64_t in_vertices = 0, in_tris = 0;
+    double read = 0, check = 0, adj = 0, build = 0, encode = 0, cycles = NAN;
+    uint64_t in_vertices = 0, in_tris = 0, num_cycles = 0;
     ss::StripStats stats;
     ss::StripArrays arr;
     std::vector<uint32_t> indices;
 };
 
-Pass strip_once(const Spec& spec, const ss::StripOptions& options) {
+Pass strip_once(const Spec& spec, const ss::StripOptions& options, bool cycles = false) {
     Pass p;
     auto t = Clock::now();
     ss::TriangleSoup soup;
@@ -360,6 +361,11 @@ Pass strip_once(const Spec& spec, const ss::StripOptions& options) {
     t = Clock::now();
     ss::StripResult res = ss::build_strip(std::move(mesh), in_numbering(options, vertex_origin));
     p.build = seconds_since(t);
+    if (cycles) {  // as the pipeline does: on the strip, before the arrays take it
+        t = Clock::now();
+        p.num_cycles = ss::compute_fundamental_cycles(res).cycles.size();
+        p.cycles = seconds_since(t);
+    }
     t = Clock::now();
     p.arr = ss::strip_arrays(std::move(res));  // as stripify() does: the points are moved, not copied
     for (uint32_t& f : p.arr.parent)
@@ -386,7 +392,10 @@ EngineRun measure_engine(const Spec& spec, ss::StripEngine engine, const std::st
     ss::StripArrays last;
     std::vector<uint32_t> last_indices;
     const ss::StripOptions options = engine_options(spec, engine);
-    r.peak_kb = tool_peak_kb(spec.path, options);
+    // Both peaks here, from the same parent state: a child forked later inherits the heap the
+    // repetitions grew, and its peak counts those pages too (100K faces: 11 MB became 20 MB).
+    r.peak_kb = tool_peak_kb(spec.path, options, false);
+    if (spec.has_cycles) r.peak_kb_cycles = tool_peak_kb(spec.path, options, true);
     const auto start = Clock::now();
     try {
         for (int rep = 0; rep < spec.reps; ++rep) {
@@ -446,6 +455,17 @@ EngineRun measure_engine(const Spec& spec, ss::StripEngine engine, const std::st
     r.t_write = median(tw);
     r.t_total = median(tt);
     r.status = 0;
+    if (spec.has_cycles) {
+        try {
+            const Pass p = strip_once(spec, options, true);
+            r.cycles = p.num_cycles;
+            r.t_cycles = p.cycles;
+        } catch (const std::exception& e) {
+            r.status = 2;
+            set_message(r, std::string("--cycles: ") + e.what());
+            return r;
+        }
+    }
     if (r.in_tris <= cfg.verify_max) {
         try {
             const ss::TriangleSoup soup = ss::prepare_soup(ss::read_mesh_file(spec.path), ss::PrepareOptions{true}, spec.path);
@@ -508,6 +528,11 @@ Reference measure_reference(const Spec& spec, int mreps, double budget) {
         r.in_vertices = soup.points.size();
         r.in_tris = soup.triangles.size();
         count_interior_valence(soup, r);
+        {
+            const ss::Mesh mesh = ss::Mesh::from_soup(soup);
+            const long long chi = mesh.euler_characteristic();
+            r.cycle_rank = mesh.num_components() == 1 && chi < 1 ? static_cast<uint64_t>(1 - chi) : 0;
+        }
         // optimizeVertexCacheStrip is quadratic in a vertex's valence (a 100K-triangle cone: 16 s,
         // so about 25 minutes at 1M): past this valence meshoptimizer is left out, and said so.
         if (r.max_valence > kMeshoptMaxValence) {

@@ -47,6 +47,7 @@ struct Spec {
     std::function<singlestrip::bench::Generated()> generate;  ///< empty for files
     uint64_t nominal = 0;                                     ///< size class (10K, ...), 0 for cgal
     int reps = 5;
+    bool has_cycles = false;  ///< set from the reference (Reference::cycle_rank > 0) before the engines run
 };
 
 struct Settings {
@@ -79,6 +80,12 @@ struct EngineRun {
     /// whose allocator keeps freed memory (every array already mapped).
     double t_first = NAN, t_cold = NAN, t_warm = NAN;
     uint64_t peak_kb = 0;
+    /// `--cycles` (issue 17: at most 2x the strip time, 1.5x the memory), measured where the
+    /// surface has cycles (Spec::has_cycles): their number, compute_fundamental_cycles() on the
+    /// strip of one more pass, and the peak of a read -> write run with PipelineOptions::cycles.
+    uint64_t cycles = 0;
+    double t_cycles = NAN;
+    uint64_t peak_kb_cycles = 0;
     double wall = NAN;  ///< filled by the parent
 };
 
@@ -98,6 +105,7 @@ struct Reference {
     double m_vcache = NAN, m_restart = NAN, m_degen = NAN;
     uint64_t m_restart_indices = 0, m_restart_strips = 0, m_degen_indices = 0, m_degen_strips = 0;
     uint64_t max_valence = 0;
+    uint64_t cycle_rank = 0;       ///< 2g + h - 1 = 1 - Euler characteristic: the fundamental cycles' number
     bool meshopt_skipped = false;  ///< max_valence over kMeshoptMaxValence
 };
 
@@ -158,6 +166,8 @@ std::string quality_table(const std::vector<const Row*>& rows);
 std::string time_table(const std::vector<const Row*>& rows, bool peak);
 std::string growth_table(const std::vector<const Row*>& rows);
 std::string constraints_table(const std::vector<Row>& rows);
+/// `--cycles` beside the strip stage, for the rows with cycles and >= 10K triangles.
+std::string cycles_table(const std::vector<Row>& rows);
 std::string targets(const std::vector<Row>& rows, const Settings& cfg);
 std::string readme_table(const std::vector<Row>& rows);
 void write_dat(const std::string& path, const std::vector<Row>& rows, Kind kind);

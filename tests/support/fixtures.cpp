@@ -554,6 +554,8 @@ const char* awkward_family_name(AwkwardFamily family) noexcept {
             return "spiked_comb";
         case AwkwardFamily::HoleLadder:
             return "hole_ladder";
+        case AwkwardFamily::HighGenus:
+            return "high_genus";
     }
     return "unknown";
 }
@@ -594,6 +596,8 @@ WalledMesh make_awkward(AwkwardFamily family, uint32_t triangles) {
             return {make_spiked_comb(std::max(1u, rounded(f / 15)), 5), {}};  // F = 15 teeth
         case AwkwardFamily::HoleLadder:
             return {make_disk_with_holes(rounded((f - 6) / 10), 1), {}};  // F = 10k + 6
+        case AwkwardFamily::HighGenus:
+            return {make_genus_surface(std::max(1u, rounded((f - 28) / 36)), 1), {}};  // F = 36g + 28
     }
     throw RequestError("generator: unknown awkward family");
 }

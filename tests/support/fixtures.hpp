@@ -176,14 +176,15 @@ enum class AwkwardFamily : uint8_t {
     ClosedCone,       ///< make_cone(k, true), about 4k faces
     SpikedComb,       ///< make_spiked_comb(teeth, 5)
     HoleLadder,       ///< make_disk_with_holes(k, 1): a hole every ten faces, in one row
+    HighGenus,        ///< make_genus_surface(g, 1): genus g, about 36 faces per handle
 };
 inline constexpr AwkwardFamily kAwkwardFamilies[] = {
     AwkwardFamily::HoleCorridors, AwkwardFamily::SlitCorridors, AwkwardFamily::SlitWalls, AwkwardFamily::SerpentineWalls,
     AwkwardFamily::ManyHoles,     AwkwardFamily::Ears,          AwkwardFamily::OpenCone,  AwkwardFamily::ClosedCone,
-    AwkwardFamily::SpikedComb,    AwkwardFamily::HoleLadder};
+    AwkwardFamily::SpikedComb,    AwkwardFamily::HoleLadder,    AwkwardFamily::HighGenus};
 
 /// "hole_corridors", "slit_corridors", "slit_walls", "serpentine_walls", "many_holes", "ears",
-/// "open_cone", "closed_cone", "spiked_comb", "hole_ladder".
+/// "open_cone", "closed_cone", "spiked_comb", "hole_ladder", "high_genus".
 const char* awkward_family_name(AwkwardFamily family) noexcept;
 
 /// The family at about `triangles` faces (grids kept roughly square, except the eared grid,
