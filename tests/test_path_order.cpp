@@ -12,10 +12,11 @@
 namespace singlestrip {
 namespace {
 
+// Rounds of up to 300 faces, then a few of up to 5000 (deeper trees, longer splay paths).
 TEST(PathOrder, RandomOperationsMatchAVector) {
     std::mt19937 rng(7);
-    for (int round = 0; round < 20; ++round) {
-        const uint32_t n = 1 + rng() % 300;
+    for (int round = 0; round < 26; ++round) {
+        const uint32_t n = 1 + rng() % (round < 20 ? 300 : 5000);
         PathOrder order(n);
         std::vector<FaceId> ref, pending(n);
         for (uint32_t i = 0; i < n; ++i) pending[i] = FaceId(i);

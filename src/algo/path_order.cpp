@@ -1,4 +1,4 @@
-// singlestrip — implicit treap over faces (path_order.hpp).
+// singlestrip — splay tree over faces keyed by position (path_order.hpp).
 #include "path_order.hpp"
 
 #include <cstddef>
@@ -6,9 +6,80 @@
 
 namespace singlestrip {
 
-PathOrder::PathOrder(uint32_t n) : left_(n, kNone), right_(n, kNone), parent_(n, kNone), size_(n, 1), flip_(n, 0) {}
+PathOrder::PathOrder(uint32_t n) : node_(n, Node{}) {}
 
-// A fixed hash as heap priority: no random state, so runs are reproducible.
+void PathOrder::push(FaceId x) {
+    Node& n = node_[x];
+    if (!n.flip) return;
+    std::swap(n.left, n.right);
+    if (n.left != kNone) node_[n.left].flip ^= 1;
+    if (n.right != kNone) node_[n.right].flip ^= 1;
+    n.flip = 0;
+}
+
+void PathOrder::pull(FaceId x) {
+    Node& n = node_[x];
+    n.size = 1 + count(n.left) + count(n.right);
+}
+
+// x up one level over its parent p (both pushed).
+void PathOrder::rotate(FaceId x) {
+    const FaceId p = node_[x].parent, g = node_[p].parent;
+    if (node_[p].left == x) {
+        node_[p].left = node_[x].right;
+        if (node_[x].right != kNone) node_[node_[x].right].parent = p;
+        node_[x].right = p;
+    } else {
+        node_[p].right = node_[x].left;
+        if (node_[x].left != kNone) node_[node_[x].left].parent = p;
+        node_[x].left = p;
+    }
+    node_[p].parent = x;
+    node_[x].parent = g;
+    if (g != kNone) (node_[g].left == p ? node_[g].left : node_[g].right) = x;
+    pull(p);
+    pull(x);
+}
+
+void PathOrder::splay(FaceId x) {
+    up_.clear();
+    for (FaceId y = x; y != kNone; y = node_[y].parent) up_.push_back(y);
+    for (std::size_t i = up_.size(); i-- > 0;) push(up_[i]);
+    while (node_[x].parent != kNone) {
+        const FaceId p = node_[x].parent, g = node_[p].parent;
+        if (g != kNone) rotate((node_[g].left == p) == (node_[p].left == x) ? p : x);
+        rotate(x);
+    }
+    root_ = x;
+}
+
+FaceId PathOrder::find(FaceId t, uint32_t k) {
+    for (;;) {
+        push(t);
+        const uint32_t ls = count(node_[t].left);
+        if (k == ls) break;
+        if (k < ls) {
+            t = node_[t].left;
+        } else {
+            k -= ls + 1;
+            t = node_[t].right;
+        }
+    }
+    splay(t);
+    return t;
+}
+
+FaceId PathOrder::join(FaceId a, FaceId b) {
+    if (a == kNone) return b;
+    if (b == kNone) return a;
+    root_ = a;
+    const FaceId m = find(a, count(a) - 1);  // a's last node, now its root with no right child
+    node_[m].right = b;
+    node_[b].parent = m;
+    pull(m);
+    return m;
+}
+
 uint32_t PathOrder::priority(FaceId f) {
     uint32_t x = f.idx();
     x ^= x >> 16;
@@ -17,58 +88,6 @@ uint32_t PathOrder::priority(FaceId f) {
     x *= 0x846ca68bU;
     x ^= x >> 16;
     return x;
-}
-
-void PathOrder::push(FaceId x) {
-    if (!flip_[x]) return;
-    std::swap(left_[x], right_[x]);
-    if (left_[x] != kNone) flip_[left_[x]] ^= 1;
-    if (right_[x] != kNone) flip_[right_[x]] ^= 1;
-    flip_[x] = 0;
-}
-
-void PathOrder::pull(FaceId x) {
-    size_[x] = 1;
-    for (const FaceId c : {left_[x], right_[x]})
-        if (c != kNone) size_[x] += size_[c], parent_[c] = x;
-}
-
-FaceId PathOrder::merge(FaceId a, FaceId b) {
-    if (a == kNone) return b;
-    if (b == kNone) return a;
-    if (priority(a) > priority(b)) {
-        push(a);
-        right_[a] = merge(right_[a], b);
-        pull(a);
-        parent_[a] = kNone;
-        return a;
-    }
-    push(b);
-    left_[b] = merge(a, left_[b]);
-    pull(b);
-    parent_[b] = kNone;
-    return b;
-}
-
-// First k elements of t into a, the rest into b.
-void PathOrder::split(FaceId t, uint32_t k, FaceId& a, FaceId& b) {
-    if (t == kNone) {
-        a = b = kNone;
-        return;
-    }
-    push(t);
-    const uint32_t ls = count(left_[t]);
-    if (k <= ls) {
-        split(left_[t], k, a, left_[t]);
-        pull(t);
-        b = t;
-    } else {
-        split(right_[t], k - ls - 1, right_[t], b);
-        pull(t);
-        a = t;
-    }
-    if (a != kNone) parent_[a] = kNone;
-    if (b != kNone) parent_[b] = kNone;
 }
 
 void PathOrder::append(const std::vector<FaceId>& items) {
@@ -82,44 +101,32 @@ void PathOrder::prepend(const std::vector<FaceId>& items) {
 }
 
 uint32_t PathOrder::position(FaceId x) {
-    up_.clear();  // flips above x must be pushed before sizes say where x is
-    for (FaceId y = x; y != kNone; y = parent_[y]) up_.push_back(y);
-    for (std::size_t i = up_.size(); i-- > 0;) push(up_[i]);
-    uint32_t pos = count(left_[x]);
-    for (FaceId y = x; parent_[y] != kNone; y = parent_[y]) {
-        const FaceId p = parent_[y];
-        if (right_[p] == y) pos += 1 + count(left_[p]);
-    }
-    return pos;
+    splay(x);  // pushes x too: its children are in order
+    return count(node_[x].left);
 }
 
 FaceId PathOrder::at(uint32_t k) {
-    FaceId t = root_;
-    for (;;) {
-        push(t);
-        const uint32_t ls = count(left_[t]);
-        if (k == ls) return t;
-        if (k < ls) {
-            t = left_[t];
-        } else {
-            k -= ls + 1;
-            t = right_[t];
-        }
-    }
+    return find(root_, k);
 }
 
 void PathOrder::reverse_front(uint32_t k) {
-    FaceId a, b;
-    split(root_, k, a, b);
-    if (a != kNone) flip_[a] ^= 1;
-    root_ = merge(a, b);
+    if (k == 0) return;
+    if (k >= size()) {
+        node_[root_].flip ^= 1;
+        return;
+    }
+    const FaceId r = find(root_, k);  // the first face kept: [0, k) is its left subtree
+    if (node_[r].left != kNone) node_[node_[r].left].flip ^= 1;
 }
 
 void PathOrder::reverse_back(uint32_t k) {
-    FaceId a, b;
-    split(root_, k, a, b);
-    if (b != kNone) flip_[b] ^= 1;
-    root_ = merge(a, b);
+    if (k == 0) {
+        if (root_ != kNone) node_[root_].flip ^= 1;
+        return;
+    }
+    if (k >= size()) return;
+    const FaceId r = find(root_, k - 1);  // the last face kept: [k, size) is its right subtree
+    if (node_[r].right != kNone) node_[node_[r].right].flip ^= 1;
 }
 
 std::vector<FaceId> PathOrder::items() {
@@ -130,12 +137,12 @@ std::vector<FaceId> PathOrder::items() {
         while (t != kNone) {
             push(t);
             stack.push_back(t);
-            t = left_[t];
+            t = node_[t].left;
         }
         t = stack.back();
         stack.pop_back();
         out.push_back(t);
-        t = right_[t];
+        t = node_[t].right;
     }
     return out;
 }
