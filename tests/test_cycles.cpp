@@ -246,6 +246,16 @@ TEST_P(StripCycles, DiskWithHolesHasKMinusOne) {
             check_surface(make_disk_with_holes(k, r), 0, k + 1, "disk with " + std::to_string(k) + " holes r=" + std::to_string(r), opts());
 }
 
+// Corridors one quad wide between long holes: each breadth-first search around a fundamental
+// triangle covers most of the mesh, so past their budget the cycles are the tree–cotree
+// generators (cycles.hpp), still a verified basis.
+TEST_P(StripCycles, CorridorsBetweenLongHolesFallBackToTreeCotree) {
+    const TriangleSoup soup = make_hole_corridors(24, 400);
+    const long long holes = 24;
+    const Outcome o = check_surface(soup, 0, holes + 1, "hole corridors", opts());
+    for (const CycleSource s : o.strip_cycles.sources) EXPECT_EQ(s, CycleSource::TreeCotree);
+}
+
 TEST_P(StripCycles, GenusWithHolesRandomFlips) {
     uint64_t seed = 1;
     for (uint32_t g : {1u, 2u, 3u})
