@@ -16,12 +16,13 @@ namespace singlestrip {
 
 namespace {
 
-/// Breadth-first searches over faces with arrays allocated once and reset by a stamp: a search
-/// costs the faces it visits, not O(F) (there is one or more per fundamental triangle).
 /// Thrown by FaceSearch when its searches together have visited more faces than their budget.
 struct SearchBudgetSpent {};
+/// The budget: visits per face, per cycle (2g + h - 1), and at least (compute_fundamental_cycles()).
 constexpr uint64_t kSearchPerFace = 16, kSearchPerCycle = 4096, kSearchFloor = 65536;
 
+/// Breadth-first searches over faces with arrays allocated once and reset by a stamp: a search
+/// costs the faces it visits, not O(F) (there is one or more per fundamental triangle).
 class FaceSearch {
 public:
     /// `budget`: faces all searches together may visit before path() throws SearchBudgetSpent.
