@@ -75,10 +75,11 @@
 // examined. With classes (growth records): the classifier O(V + F) once; per candidate examined
 // (shortest first, until one is independent) O(n log n + dim) to classify its n faces and
 // O(dim^2 / 64) at worst to reduce the class; tree–cotree generators are built only when kept
-// (their classes are unit vectors). The searches together visit at most 16 F + 4096 dim faces:
-// past that (corridors one quad wide between long holes, where each search covers most of the
-// mesh) every cycle is a tree–cotree generator instead (CycleSource::TreeCotree), still a basis,
-// in O(V + F + their length). make_genus_surface(6724, 1):
+// (their classes are unit vectors). The searches together visit at most 16 F + 4096 dim faces,
+// and give up sooner when, past F of them, their pace per cycle would spend that 8 times over:
+// then (corridors one quad wide between long holes, where each search covers most of the mesh)
+// every cycle is a tree–cotree generator instead (CycleSource::TreeCotree), still a basis, in
+// O(V + F + their length). make_genus_surface(6724, 1):
 // matching strip (256K faces) 0.07 s of cycles; growth strip (282K faces) 0.3 s with its
 // records, 0.08 s replayed.
 #pragma once

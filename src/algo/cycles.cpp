@@ -20,14 +20,30 @@ namespace {
 struct SearchBudgetSpent {};
 /// The budget: visits per face, per cycle (2g + h - 1), and at least (compute_fundamental_cycles()).
 constexpr uint64_t kSearchPerFace = 16, kSearchPerCycle = 4096, kSearchFloor = 65536;
+/// Past F + kSearchFloor visits, the searches give up early when the visits per cycle so far,
+/// times the cycles, exceed this many budgets (corridors: 10-56; every other mesh measured: at
+/// most 2.3, cheese.off).
+constexpr uint64_t kSearchProjection = 8;
 
 /// Breadth-first searches over faces with arrays allocated once and reset by a stamp: a search
 /// costs the faces it visits, not O(F) (there is one or more per fundamental triangle).
 class FaceSearch {
 public:
-    /// `budget`: faces all searches together may visit before path() throws SearchBudgetSpent.
-    FaceSearch(const Mesh& mesh, uint64_t budget)
-        : mesh_(mesh), stamp_(mesh.num_faces(), 0), parent_(mesh.num_faces(), kNone), budget_(budget) {}
+    /// `budget`: faces all searches together may visit before path() throws SearchBudgetSpent;
+    /// `cycles`: the cycles they are for (next_cycle() checks the pace).
+    FaceSearch(const Mesh& mesh, uint64_t budget, uint64_t cycles)
+        : mesh_(mesh), stamp_(mesh.num_faces(), 0), parent_(mesh.num_faces(), kNone), budget_(budget), initial_(budget), cycles_(cycles) {}
+
+    /// Called before the searches for each further cycle: throws SearchBudgetSpent when, at the
+    /// pace so far, all the cycles would spend the budget many times over (on corridors between
+    /// long holes the first cycle's searches alone visit 1.5 F faces: the budget then goes on
+    /// the first dozen cycles, a third of the time `--cycles` took before the fallback).
+    void next_cycle() {
+        const uint64_t used = initial_ - budget_;
+        if (done_ > 0 && used > mesh_.num_faces() + kSearchFloor && used / done_ * cycles_ > kSearchProjection * initial_)
+            throw SearchBudgetSpent{};
+        ++done_;
+    }
 
     /// Shortest chain of edge-adjacent faces from `from` to `to` (both included) avoiding `avoid`;
     /// with `time`, only through faces whose time is greater than `after`. Empty if there is none.
@@ -69,6 +85,8 @@ private:
     std::vector<FaceId> queue_;
     uint32_t current_ = 0;
     uint64_t budget_;
+    const uint64_t initial_, cycles_;
+    uint64_t done_ = 0;  ///< cycles whose searches have started
 };
 
 /// A basis of the classes kept so far, in echelon form: rows_[c] is a class whose lowest set bit
@@ -369,6 +387,7 @@ bool choose_nested(const StripView& v, FaceSearch& search, const std::vector<uin
             later += g.valid() && v.pos[g] > p;
         }
         if (later != 2) return false;
+        search.next_cycle();
         std::vector<Candidate> cand = candidates_for(v, search, p);
         auto it = std::find_if(cand.begin(), cand.end(), [&](const Candidate& c) { return in_suffix(v, c, p); });
         if (it == cand.end()) return false;
@@ -395,6 +414,7 @@ std::vector<Candidate> choose_independent(const StripView& view, FaceSearch& sea
     for (size_t i = 0, j = 0; i < fundamental.size(); i = j) {
         // A triangle counted twice (a first face joining loops) fills both slots from one list.
         while (j < fundamental.size() && fundamental[j] == fundamental[i]) ++j;
+        search.next_cycle();
         std::vector<Candidate> cand = candidates_for(view, search, fundamental[i]);
         size_t next = 0;
         for (size_t slot = i; slot < j; ++slot) {
@@ -455,16 +475,17 @@ Cycles compute_fundamental_cycles(const StripResult& result) {
     // (hole corridors, 1M faces: 42 s for 500 cycles). Past 16 visits a face plus 4,096 a cycle
     // (cheese.off, genus 133, needs 1,024-2,048 a cycle), the tree–cotree generators are the
     // cycles instead: a basis too, in time linear in their length (the same 1M faces: 1.6 s).
-    FaceSearch search(mesh, kSearchPerFace * uint64_t{nf} + kSearchPerCycle * uint64_t{rank_of(mesh)} + kSearchFloor);
+    const size_t rank = rank_of(mesh);  // two passes over the boundary: once
+    FaceSearch search(mesh, kSearchPerFace * uint64_t{nf} + kSearchPerCycle * uint64_t{rank} + kSearchFloor, rank);
     std::vector<Candidate> chosen;
     try {
-        bool nested = !recorded && choose_nested(view, search, fundamental, rank_of(mesh), chosen);
+        bool nested = !recorded && choose_nested(view, search, fundamental, rank, chosen);
         // The growth builder's own triangles need classes: a dense Z2 basis of (2g)^2 bits and a
         // class per candidate, O(g) each (g^2 in all). The replay of its order usually needs none,
         // so the cost follows the cycles' length; classes only when the replay's conditions fail.
         if (!nested && recorded) {
             const StripView replayed{mesh, result.order, pos, pos};
-            nested = choose_nested(replayed, search, replay_fundamental_positions(mesh, result.order), rank_of(mesh), chosen);
+            nested = choose_nested(replayed, search, replay_fundamental_positions(mesh, result.order), rank, chosen);
         }
         if (!nested) chosen = choose_independent(view, search, fundamental);
     } catch (const SearchBudgetSpent&) {
