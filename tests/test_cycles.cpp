@@ -246,6 +246,37 @@ TEST_P(StripCycles, DiskWithHolesHasKMinusOne) {
             check_surface(make_disk_with_holes(k, r), 0, k + 1, "disk with " + std::to_string(k) + " holes r=" + std::to_string(r), opts());
 }
 
+// A strip that starts inside a large mesh with boundary (here from an interior seed face): its
+// first face opens a hole, so the replay finds one fundamental triangle more than 2g+h-1, and
+// from 2^19 faces the order is replayed from its first face on the boundary instead of computing
+// homology classes (cycles.cpp, choose_nested_reordered). Still a verified basis of strip cycles.
+TEST_P(StripCycles, LargeStripFromAnInteriorSeed) {
+    TriangleSoup soup = make_annulus(1024, 264);
+    remove_random_faces_as_holes(soup, 8, 7);
+    Mesh mesh = Mesh::from_soup(soup);
+    ASSERT_GE(mesh.num_faces(), 1u << 19);
+    auto on_boundary = [&](const Mesh& m, FaceId f) {
+        return m.is_boundary(Mesh::halfedge(f, 0)) || m.is_boundary(Mesh::halfedge(f, 1)) || m.is_boundary(Mesh::halfedge(f, 2));
+    };
+    FaceId seed(mesh.num_faces() / 2);
+    while (on_boundary(mesh, seed)) seed = FaceId(seed.idx() + 1);
+    StripOptions o = opts();
+    o.seed_face = seed;
+    const StripResult r = build_strip(std::move(mesh), o);
+    ASSERT_FALSE(on_boundary(r.mesh, FaceId(r.order.front()))) << "the scenario: the strip starts inside";
+    const Cycles c = compute_fundamental_cycles(r);
+    ASSERT_EQ(c.cycles.size(), 9u);  // annulus (h = 2) with 8 more holes: 2g + h - 1
+    for (const CycleSource s : c.sources) EXPECT_NE(s, CycleSource::TreeCotree);
+    expect_closed_chains(r, c, "annulus with holes, interior seed");
+    const StripArrays a = strip_arrays(r);
+    VerifyInput in = verify_input(soup, a, encode_triangle_strip(a.faces));
+    in.cycles = c.cycles;
+    const VerifyReport rep = verify(in);
+    EXPECT_TRUE(rep.ok()) << rep.to_string();
+    EXPECT_EQ(rep.cycle_rank, 9u);
+    EXPECT_EQ(z2_rank(a.points, a.faces, c.cycles).rank, 9u) << "second-opinion Z2 rank";
+}
+
 // Corridors one quad wide between long holes: each breadth-first search around a fundamental
 // triangle covers most of the mesh, so past their budget the cycles are the tree–cotree
 // generators (cycles.hpp), still a verified basis.

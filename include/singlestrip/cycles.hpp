@@ -22,8 +22,12 @@
 //     a cycle is, in H1(U_p), the class T adds plus one of U_{p+1}, so one per triangle are
 //     independent in H1(U_1), and H1(U_1) -> H1(M) is injective when no face capped a hole.
 //     Cost: the candidates' searches and lengths, no term in g x dim.
-//   * Otherwise (growth records; a replay with an interior first face on a surface with boundary,
-//     which finds one triangle more than the rank): classes are computed as below and each T
+//   * A replay with an interior first face on a surface with boundary finds one triangle more
+//     than the rank. From 2^19 faces the order is then replayed from its first face on the
+//     boundary (the prefix before it read backwards; no strip segment crosses that seam) and
+//     kept as above when the conditions hold (no classes: their arrays were --cycles' memory).
+//   * Otherwise (growth records; the cases above when their conditions fail): classes are
+//     computed as below and each T
 //     keeps its shortest independent candidate; the greedy choice can leave a triangle without
 //     one (about 6% of them on make_genus_surface() at high genus with growth records), and the
 //     tree–cotree fallback fills those.
