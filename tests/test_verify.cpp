@@ -309,6 +309,38 @@ TEST(Verify, BoundaryPointSplitPassesSliverFails) {
     EXPECT_TRUE(has_failure(r, "geometry", "degenerate")) << joined(r);
 }
 
+// A polygon's ear on a circle of 20,000 points (height 5e-8, coordinates near 1) and the face
+// across its long edge, that edge split at its midpoint: valid. The verifier allows a midpoint's
+// rounding there (16 ulps of the coordinates; Engines.ThinEarsOfAPolygonOnACircle needs it), so
+// a point moved off the edge by 1e-12, far above rounding, must still be caught.
+ss::VerifyInput thin_ear_split(double move) {
+    ss::VerifyInput in;
+    const double d = 2 * std::numbers::pi / 20000;
+    auto at = [](double t) { return Point3{std::cos(t), std::sin(t), 0}; };
+    in.in_points = {at(0), at(d), at(2 * d), at(std::numbers::pi)};  // A B C D
+    in.in_faces = {{0, 1, 2}, {0, 2, 3}};                            // the ear, the face across C-A
+    in.out_points = in.in_points;
+    const Point3 m{0.5 * (in.in_points[0][0] + in.in_points[2][0]) - move, 0.5 * (in.in_points[0][1] + in.in_points[2][1]), 0};
+    in.out_points.push_back(m);  // 4
+    in.out_faces = {{0, 1, 4}, {1, 2, 4}, {4, 2, 3}, {0, 4, 3}};
+    in.out_parent = {0, 0, 1, 1};
+    return in;
+}
+
+TEST(Verify, ThinEarSplitFarFromTheOriginPasses) {
+    auto in = thin_ear_split(0);
+    auto r = ss::verify(in);
+    EXPECT_TRUE(r.ok()) << joined(r);
+    in.out_parent.clear();  // inferred
+    r = ss::verify(in);
+    EXPECT_TRUE(r.ok()) << joined(r);
+}
+
+TEST(VerifyCatches, ThinEarSplitPointMovedOffItsEdge) {
+    const auto r = ss::verify(thin_ear_split(1e-12));
+    EXPECT_TRUE(has_failure(r, "geometry", "not inside")) << joined(r);
+}
+
 TEST(VerifyCatches, WrongCycleCount) {
     Grid g = grid(6, 4, true);
     g.in.cycles = std::vector<std::vector<uint32_t>>{row_cycle(g, 0)};

@@ -132,11 +132,23 @@ struct ParentFrame {
     /// Absolute tolerance for twice an area in this face: relative to size^2, plus the rounding
     /// of coordinate differences far from the origin.
     double area_tol = 0;
-    /// Nearly degenerate (a sliver, a needle or a point): |n| <= 1e-6 size^2. Barycentric
+    /// Nearly degenerate (a sliver, a needle or a point): |n| <= 1e-6 size^2, or a height within
+    /// 16 (slack + round) at the coordinates' precision. Barycentric
     /// coordinates divide by |n|^2 and lose about log10(size^2/|n|) digits, and the normal's
     /// direction is noise, so such parents get the robust tests of sliver_contains() instead.
     bool ill = false;
     double slack = 0;  ///< float32 mode: absolute rounding allowance in these units
+    /// Rounding of a point computed from these corners (a midpoint) far from the origin: 16 ulps
+    /// of the largest coordinate. A thin face far from the origin turns it into barycentric
+    /// errors above kRelTol (a polygon's ear on a circle of 20,000 points: 2e-9).
+    double round = 0;
+    /// How far a point may lie from the plane, and how far below 0 its barycentric coordinates
+    /// may go, and still count as in this face: kRelTol of the size, plus the float32 slack and
+    /// the rounding above. A barycentric l_i below 0 is a distance -l_i |n| / |edge_i| outside
+    /// edge i, and the normal's direction errs by about round * size / |n|.
+    [[nodiscard]] double plane_tol() const { return kRelTol * size + slack + round * (1 + size * stretch()); }
+    [[nodiscard]] double bary_tol() const { return kRelTol + (slack + round) * stretch(); }
+    [[nodiscard]] double stretch() const { return n2 > 0 ? size / std::sqrt(n2) : 0.0; }
 };
 ParentFrame frame_of(const std::vector<Point3>& pts, const Triangle& t);
 

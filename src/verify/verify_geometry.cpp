@@ -64,8 +64,12 @@ ParentFrame frame_of(const std::vector<Point3>& pts, const Triangle& t) {
     for (const V3* q : {&p.a, &p.b, &p.c})
         for (double x : *q) m = std::max(m, std::abs(x));
     p.slack = kFloatSlack * m;
+    p.round = 16 * std::numeric_limits<double>::epsilon() * m;
     p.area_tol = kRelTol * p.size * p.size + 64 * std::numeric_limits<double>::epsilon() * m * p.size + 8 * p.slack * p.size;
-    p.ill = !(std::sqrt(p.n2) > 1e-6 * p.size * p.size);
+    // Also nearly degenerate at the coordinates' precision: a height (|n| / size) within 16
+    // roundings of the largest coordinate (float32 output: a needle on a circle of 20,000
+    // points is thinner than a float32 step there; its split children may round to either side).
+    p.ill = !(std::sqrt(p.n2) > std::max(1e-6 * p.size, 16 * (p.slack + p.round)) * p.size);
     return p;
 }
 /// Containment test for a nearly degenerate parent that needs no division by its area: q lies
@@ -161,10 +165,8 @@ void check_geometry(Checked& chk) {
         for (const V3& p : {wa, wb, wc}) {
             double dist = 0;
             const auto l = bary(P, p, dist);
-            if (!(dist <= kRelTol * P.size + P.slack)) in_plane = false;
-            // A barycentric l_i below 0 is a distance -l_i * |n| / |edge_i| outside edge i.
-            const double l_slack = P.slack > 0 ? P.slack * P.size / std::sqrt(P.n2) : 0.0;
-            if (!(std::min({l[0], l[1], l[2]}) >= -kRelTol - l_slack)) inside = false;
+            if (!(dist <= P.plane_tol())) in_plane = false;
+            if (!(std::min({l[0], l[1], l[2]}) >= -P.bary_tol())) inside = false;
         }
         if (!in_plane)
             fails.add("geometry", who + ": not in its parent's plane");

@@ -47,9 +47,9 @@ uint32_t best_container(const std::vector<Point3>& in_pts, const std::vector<Tri
         }
         double dist = 0;
         const auto l = bary(p, q, dist);
-        if (!(dist <= kRelTol * p.size)) continue;
+        if (!(dist <= p.plane_tol())) continue;
         const double m = std::min({l[0], l[1], l[2]});
-        if (m >= -kRelTol && m > best_min) {
+        if (m >= -p.bary_tol() && m > best_min) {
             best_min = m;
             best = f;
         }
