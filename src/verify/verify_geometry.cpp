@@ -89,7 +89,8 @@ bool sliver_contains(const ParentFrame& p, const V3& world_q) {
     const double t = dot(sub(q, p.u), d) / dd;
     const V3 foot = {p.u[0] + t * d[0], p.u[1] + t * d[1], p.u[2] + t * d[2]};
     const double height = std::sqrt(p.n2) / p.size;
-    return t >= -kRelTol && t <= 1 + kRelTol && norm(sub(q, foot)) <= height + tol;
+    const double t_tol = kRelTol + tol / std::sqrt(dd);  // the same distance along the edge
+    return t >= -t_tol && t <= 1 + t_tol && norm(sub(q, foot)) <= height + tol;
 }
 
 /// Barycentric coordinates of the projection of q onto the parent's plane, and the distance
