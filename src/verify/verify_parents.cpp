@@ -31,30 +31,33 @@ InputStars build_stars(size_t n, const std::vector<Triangle>& in_faces) {
     return s;
 }
 
-/// Best input face among candidates for point q: the one with the largest minimum barycentric
-/// coordinate among those whose plane passes within tolerance. kNo when none contains q.
+/// Best input face among candidates for point q, in three tiers: a well-conditioned face that
+/// contains q within kRelTol (the largest minimum barycentric coordinate wins), else a nearly
+/// degenerate one that contains it, else a well-conditioned one within the rounding allowance of
+/// ParentFrame::bary_tol (thin faces far from the origin). kNo when none contains q.
 uint32_t best_container(const std::vector<Point3>& in_pts, const std::vector<Triangle>& in_faces, const std::vector<uint32_t>& cand,
                         const V3& q) {
-    uint32_t best = kNo;
-    double best_min = -std::numeric_limits<double>::infinity();
+    uint32_t best = kNo, sliver = kNo, loose = kNo;
+    double best_min = -std::numeric_limits<double>::infinity(), loose_min = best_min;
     for (uint32_t f : cand) {
         const ParentFrame p = frame_of(in_pts, in_faces[f]);
-        if (p.ill) {
-            // No reliable barycentrics: a robust containment test, ranked below every
-            // well-conditioned face that contains q.
-            if (sliver_contains(p, q) && best == kNo) best = f;
+        if (p.ill) {  // no reliable barycentrics: a robust containment test
+            if (sliver == kNo && sliver_contains(p, q)) sliver = f;
             continue;
         }
         double dist = 0;
         const auto l = bary(p, q, dist);
         if (!(dist <= p.plane_tol())) continue;
         const double m = std::min({l[0], l[1], l[2]});
-        if (m >= -p.bary_tol() && m > best_min) {
+        if (dist <= kRelTol * p.size && m >= -kRelTol && m > best_min) {
             best_min = m;
             best = f;
+        } else if (m >= -p.bary_tol() && m > loose_min) {
+            loose_min = m;
+            loose = f;
         }
     }
-    return best;
+    return best != kNo ? best : sliver != kNo ? sliver : loose;
 }
 
 std::vector<uint32_t> infer_parents(const VerifyInput& in, const Adjacency& out, const InputStars& stars, Failures& fails) {
