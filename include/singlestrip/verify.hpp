@@ -9,11 +9,14 @@
 // What verify() checks (every failure message names the property and the face numbers):
 //   * original vertices unchanged: out_points[0..n) == in_points exactly (n = in_points.size());
 //   * geometry: each output face lies in its parent's plane and inside the parent (barycentric,
-//     tolerance 1e-9 relative to the parent's size), is not degenerate, and has the parent's
+//     tolerance 1e-9 relative to the parent's size, plus 16 ulps of its largest coordinate
+//     turned into barycentric terms by its shape: a midpoint's rounding in a thin face far
+//     from the origin), is not degenerate, and has the parent's
 //     orientation; per parent the children's areas sum to the parent's area (relative 1e-9);
 //     every input face has at least one child;
 //     Nearly degenerate parents (|normal| <= 1e-6 size^2, where barycentric coordinates are
-//     ill-conditioned; zero-area faces included) get a robust test instead: every child vertex
+//     ill-conditioned, or a height within 16 roundings of the coordinates (float32 outputs: a
+//     float32 step); zero-area faces included) get a robust test instead: every child vertex
 //     within the parent's bounding box and within its height of its longest edge, no child
 //     larger than the parent, areas unsigned, orientation not checked (reported as a note).
 //     Coordinates are scaled by a power of two per face first, so huge or tiny ones are exact.
