@@ -260,7 +260,7 @@ void PathGrower::run(StructId path_root) {
 }
 
 void MatchingBuilder::absorb_loops() {
-    if (num_pins_ > 0 || mesh_.num_faces() < 2) return;
+    if (!ends_free() || mesh_.num_faces() < 2) return;  // a loop is to be cut at a pin
     uint32_t loops = 0;
     StructId path = kNone;
     for (StructId s : IdRange<StructId>(static_cast<uint32_t>(uf_.size()))) {

@@ -2,7 +2,7 @@
 //   strip_matching.cpp  pins, ear and bridge splits, the patterned matching, run() and the fallback;
 //   matching_repair.cpp faces left short: augmenting paths, Edmonds in balls, splits beside them;
 //   matching_chains.cpp short faces at the junctions of forced chains: the chains split;
-//   matching_joins.cpp  loops and paths labelled, alternating-cycle flips, the joins;
+//   matching_joins.cpp  loops and paths labelled, alternating-cycle flips, the joins, one pin;
 //   matching_absorb.cpp loops taken into one growing path by end rotations.
 // The method and why it ends in one strip: docs/algorithm.md, "The matching engine".
 #pragma once
@@ -269,6 +269,15 @@ private:
     StripResult fallback();
     StripResult retry_or_fallback();
     bool plain_paths_ = false;  ///< step 6 by shortest augmenting paths (the retry before the fallback)
+    /// One pin only (a source, a target or a seed face): first built as one loop with no pin,
+    /// cut at a face of the pin (run()); `pinned_only_` is the retry with the pin, when that
+    /// loop does not come out.
+    bool loop_mode_ = false, pinned_only_ = false;
+    FaceId loop_pin_ = kNone;  ///< loop mode: the seed face, else kNone (a face at the vertex)
+    /// Two short faces may stay as the strip's two ends: no pin, and no loop to be cut at one.
+    [[nodiscard]] bool ends_free() const { return num_pins_ == 0 && !loop_mode_; }
+    [[nodiscard]] FaceId loop_start() const;
+    StripResult retry_pinned();
     Mesh input_mesh() const;
     Mesh pre_merge_mesh(const Mesh& original) const;
 };

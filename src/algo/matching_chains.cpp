@@ -80,7 +80,7 @@ bool MatchingBuilder::split_along_chains(const std::vector<FaceId>& short_faces)
     // longest chain is left unsplit when it would pair the last two.
     size_t left = 0;
     for (FaceId u : short_faces) left += quota_[u] > 0 && !paired[u];
-    if (left == 0 && num_pins_ == 0 && !chosen.empty()) chosen.pop_back();
+    if (left == 0 && ends_free() && !chosen.empty()) chosen.pop_back();
     // Only chain faces and the near end are split, so the other chosen chains stay as found.
     for (const Candidate& c : chosen) split_chain(c.h, c.faces, nullptr);
     return !chosen.empty();
@@ -130,7 +130,7 @@ bool MatchingBuilder::augment_all_through_chains(const std::vector<FaceId>& shor
     constexpr uint32_t kGiveUp = 32;
     size_t left = 0;
     for (FaceId u : short_faces) left += quota_[u];
-    const size_t keep = num_pins_ == 0 ? 2 : 0;
+    const size_t keep = ends_free() ? 2 : 0;
     const size_t budget = std::max<size_t>(1024, 16 * size_t{mesh_.num_faces()} / std::max<size_t>(1, short_faces.size()));
     bool any = false;
     uint32_t failed = 0;

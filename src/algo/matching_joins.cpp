@@ -1,7 +1,9 @@
 // singlestrip — matching engine: loops and paths labelled, loops joined by flipping alternating
-// cycles, then the joins (path ends for free, loops by one midpoint split each).
+// cycles, then the joins (path ends for free, loops by one midpoint split each); where one loop
+// is cut at a single pin.
 #include <algorithm>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "matching_builder.hpp"
@@ -318,6 +320,25 @@ uint32_t MatchingBuilder::num_structures() {
 bool MatchingBuilder::single_strip_ready() {
     if (num_structures() != 1) return false;
     return num_pins_ != 2 || cycle_[find(StructId(0))];  // one structure: every id leads to its root
+}
+
+// One pin, and no loop came out to cut there: the engine again with the pin linked to the
+// virtual face (its strip may end at a short face anywhere).
+StripResult MatchingBuilder::retry_pinned() {
+    MatchingBuilder pinned(input_mesh(), opt_);
+    pinned.pinned_only_ = true;
+    pinned.plain_paths_ = plain_paths_;
+    release_work_arrays();
+    mesh_ = Mesh();
+    return pinned.run();
+}
+
+// Loop mode: where the loop is cut, a face of the pin (the seed face, else a face at the source
+// or target vertex; reversed_ turns a target's walk round).
+FaceId MatchingBuilder::loop_start() const {
+    const std::optional<VertexId> v = opt_.source ? opt_.source : opt_.target;
+    if (loop_pin_ != kNone && (!v || face_has_vertex(mesh_, loop_pin_, *v))) return loop_pin_;
+    return face_at_vertex(mesh_, blocked_, *v, kNone);  // the seed face was split away from it
 }
 
 }  // namespace singlestrip::matching

@@ -386,7 +386,7 @@ void MatchingBuilder::settle_leftovers() {
         repair_short(short_faces);
     }
     // Then alternating paths whose steps may run along forced chains (split), leaving two.
-    if (short_faces.size() > (num_pins_ == 0 ? 2 : 0) && augment_all_through_chains(short_faces)) {
+    if (short_faces.size() > (ends_free() ? 2 : 0) && augment_all_through_chains(short_faces)) {
         chain_splits_ = true;
         collect();
         repair_short(short_faces);
