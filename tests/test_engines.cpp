@@ -651,3 +651,33 @@ TEST(MatchingPattern, ThinToriRunAlongTheirLength) {
         EXPECT_LE(c.result.stats.swaps, 2 * std::min(around, along) + 2) << what << ": about two swaps a loop, one loop per band along";
     }
 }
+
+// One pin alone (a source, a target or a seed face inside an annulus): the matching engine builds
+// one loop without it and cuts the loop there, instead of leaving the growth builder to finish
+// (a pinned face left a short face the repair could not place: +7% on this annulus).
+TEST(MatchingPins, OnePinInsideIsALoopCutThere) {
+    // A polar grid of 256 x 60 quads, each cut along the same diagonal.
+    const uint32_t n = 256, m = 60;
+    TriangleSoup soup;
+    for (uint32_t j = 0; j <= m; ++j)
+        for (uint32_t i = 0; i < n; ++i) {
+            const double r = 1.0 + double(j) / m, t = 2 * std::numbers::pi * i / n;
+            soup.points.push_back({r * std::cos(t), r * std::sin(t), 0});
+        }
+    for (uint32_t j = 0; j < m; ++j)
+        for (uint32_t i = 0; i < n; ++i) {
+            const uint32_t a = j * n + i, b = j * n + (i + 1) % n, c = a + n, d = b + n;
+            soup.triangles.push_back({a, b, d});
+            soup.triangles.push_back({a, d, c});
+        }
+    const VertexId inside(7000);
+    for (int kind = 0; kind < 3; ++kind) {
+        StripOptions o;
+        if (kind == 0) o.source = inside;
+        if (kind == 1) o.target = inside;
+        if (kind == 2) o.seed_face = FaceId(static_cast<uint32_t>(soup.triangles.size() / 2));
+        const singlestrip::testing::StripCheck c = singlestrip::testing::strip_and_verify(soup, o);
+        EXPECT_TRUE(c.report.ok()) << "kind " << kind << ": " << singlestrip::testing::describe(c);
+        EXPECT_FALSE(c.result.stats.growth_fallback) << "kind " << kind;
+    }
+}
