@@ -277,7 +277,7 @@ private:
     /// Two short faces may stay as the strip's two ends: no pin, and no loop to be cut at one.
     [[nodiscard]] bool ends_free() const { return num_pins_ == 0 && !loop_mode_; }
     [[nodiscard]] FaceId loop_start() const;
-    StripResult retry_pinned();
+    StripResult rerun(bool plain_paths, bool pinned_only);
     Mesh input_mesh() const;
     Mesh pre_merge_mesh(const Mesh& original) const;
 };

@@ -322,17 +322,6 @@ bool MatchingBuilder::single_strip_ready() {
     return num_pins_ != 2 || cycle_[find(StructId(0))];  // one structure: every id leads to its root
 }
 
-// One pin, and no loop came out to cut there: the engine again with the pin linked to the
-// virtual face (its strip may end at a short face anywhere).
-StripResult MatchingBuilder::retry_pinned() {
-    MatchingBuilder pinned(input_mesh(), opt_);
-    pinned.pinned_only_ = true;
-    pinned.plain_paths_ = plain_paths_;
-    release_work_arrays();
-    mesh_ = Mesh();
-    return pinned.run();
-}
-
 // Loop mode: where the loop is cut, a face of the pin (the seed face, else a face at the source
 // or target vertex; reversed_ turns a target's walk round).
 FaceId MatchingBuilder::loop_start() const {

@@ -416,8 +416,9 @@ MatchingBuilder::Band MatchingBuilder::follow_band(FaceId s, HalfedgeId m) const
     return band;
 }
 
-// The faces in strip order: from the first pinned face, else from a path end, else around the
-// loop from face 0. Plain face indices, as StripResult::order holds them.
+// The faces in strip order: from the first pinned face, else (loop mode) around the loop from a
+// face of the pin, else from a path end, else around the loop from face 0. Plain face indices,
+// as StripResult::order holds them.
 std::vector<uint32_t> MatchingBuilder::walk(uint32_t& swaps) const {
     const uint32_t nf = mesh_.num_faces();
     FaceId start = num_pins_ ? pins_[0] : loop_mode_ ? loop_start() : FaceId(kNone);
@@ -619,14 +620,19 @@ Mesh MatchingBuilder::input_mesh() const {
 // succeed (random constraints with source and target: 14 growth fallbacks in 232 cases against
 // 11 with plain paths); before the growth builder, the engine runs again with plain paths.
 StripResult MatchingBuilder::retry_or_fallback() {
-    if (loop_mode_) return retry_pinned();
+    if (loop_mode_) return rerun(plain_paths_, true);
     if (plain_paths_) return fallback();
-    MatchingBuilder plain(input_mesh(), opt_);
-    plain.plain_paths_ = true;
-    plain.pinned_only_ = pinned_only_;
+    return rerun(true, pinned_only_);
+}
+
+// The engine again on the input, with these settings; this one's arrays are given back first.
+StripResult MatchingBuilder::rerun(bool plain_paths, bool pinned_only) {
+    MatchingBuilder again(input_mesh(), opt_);
+    again.plain_paths_ = plain_paths;
+    again.pinned_only_ = pinned_only;
     release_work_arrays();
     mesh_ = Mesh();
-    return plain.run();
+    return again.run();
 }
 
 StripResult MatchingBuilder::run() {
@@ -664,7 +670,7 @@ StripResult MatchingBuilder::run() {
     merge_all();
     if (opt_.validate_each_split) mesh_.validate();
     if (!single_strip_ready() || stats_.splits > stats_.input_triangles) return retry_or_fallback();
-    if (loop_mode_ && !cycle_[find(StructId(0))]) return retry_pinned();
+    if (loop_mode_ && !cycle_[find(StructId(0))]) return rerun(plain_paths_, true);  // no loop to cut: pinned
     uint32_t swaps = 0;
     std::vector<uint32_t> order = walk(swaps);
     if (order.size() != mesh_.num_faces() || (num_pins_ == 2 && order.back() != pins_[1].idx())) return retry_or_fallback();
