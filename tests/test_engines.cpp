@@ -497,24 +497,7 @@ TEST_P(Engines, HighValenceVertices) {
 // coordinates near 1, below what barycentric coordinates resolve after a midpoint's rounding.
 // Every strip still verifies (the verifier allows that rounding, verify_checks.hpp).
 TEST_P(Engines, ThinEarsOfAPolygonOnACircle) {
-    const uint32_t n = 20000;
-    TriangleSoup soup;
-    for (uint32_t i = 0; i < n; ++i) {
-        const double t = 2 * std::numbers::pi * i / n;
-        soup.points.push_back({std::cos(t), std::sin(t), 0});
-    }
-    std::mt19937 rng(7);
-    std::vector<std::pair<uint32_t, uint32_t>> todo{{0, n - 1}};
-    while (!todo.empty()) {
-        const auto [i, j] = todo.back();
-        todo.pop_back();
-        if (j - i < 2) continue;
-        const uint32_t k = i + 1 + static_cast<uint32_t>(rng() % (j - i - 1));
-        soup.triangles.push_back({i, k, j});
-        todo.push_back({i, k});
-        todo.push_back({k, j});
-    }
-    expect_verified(soup, opts(), "polygon of 20000 points on a circle, random diagonals");
+    expect_verified(make_circle_polygon(20000), opts(), "polygon of 20000 points on a circle, random diagonals");
 }
 
 // Issue 15's bound for the matching engine on the awkward families (10% extra triangles),

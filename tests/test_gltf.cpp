@@ -190,6 +190,30 @@ TEST(Gltf, RoundTripDecodesToOutputFaces) {
     }
 }
 
+// glTF holds float32 positions and no parents: the verifier finds each face's parent from the
+// split structure. Polygons whose ears are thinner than a float32 step (20,000 points on the
+// unit circle; 5,000 on a circle of radius 1 at 1e4 from the origin, where a step is 1e-3)
+// made geometric inference pick neighbouring ears and report valid strips as broken.
+TEST(Gltf, Float32NeedlesVerify) {
+    const std::vector<std::pair<std::string, TriangleSoup>> polygons = {
+        {"unit", make_circle_polygon(20000)},
+        {"far", make_circle_polygon(5000, 1, {1e4, 1e4, 0})},
+        {"small", make_circle_polygon(20000, 1e-3, {0, 0, 0}, 11)},
+    };
+    for (const auto& [name, soup] : polygons)
+        for (StripEngine e : {StripEngine::Matching, StripEngine::Growth}) {
+            SCOPED_TRACE(name + (e == StripEngine::Matching ? " matching" : " growth"));
+            StripOptions o;
+            o.engine = e;
+            const StripArrays a = strip_arrays(build_strip(Mesh::from_soup(prepare_soup(soup, {}, "test")), o));
+            ASSERT_GT(a.faces.size(), soup.triangles.size());  // split: there are parents to find
+            const std::string file = (scratch_dir() / ("needles_" + name + ".glb")).string();
+            write_gltf_strip(file, a, encode_triangle_strip(a.faces));
+            const VerifyReport r = verify_files(soup, file);
+            EXPECT_TRUE(r.ok()) << r.to_string();
+        }
+}
+
 TEST(Gltf, BigMeshUsesUint32AndSmallUint16) {
     const StripArrays big = strip_of(make_grid_disk(260, 260));
     ASSERT_GT(big.points.size(), 65535u);

@@ -453,9 +453,9 @@ TEST(VerifyCatches, GarbageIsReportedNotThrown) {
     EXPECT_FALSE(r.ok());
     in = split_quad();
     in.out_parent.clear();
-    in.out_points[4] = {5, 5, 5};  // parents cannot be inferred
+    in.out_points[4] = {5, 5, 5};  // not a midpoint: parents from the input edges the faces hold
     EXPECT_NO_THROW(r = ss::verify(in));
-    EXPECT_TRUE(has_failure(r, "parent", "no input face contains")) << joined(r);
+    EXPECT_TRUE(has_failure(r, "geometry", "not in its parent's plane")) << joined(r);
 }
 
 TEST(VerifyCatches, TorusFaceDroppedChangesTopology) {

@@ -49,13 +49,21 @@
 //     tested by their intersection parities with a basis of H1(M, dM) built by tree-cotree on
 //     the output mesh, Gaussian elimination over Z2 (rank must equal the count).
 //
-// Parent inference. When out_parent is empty (OBJ/OFF outputs) each output face gets the input
-// face containing its centroid, found among the input faces around its original vertices or
-// around a neighbouring face's parent (breadth-first over output faces).
+// Parent inference. When out_parent is empty (glTF, OBJ, OFF outputs) the parents come from the
+// split structure first, with no tolerance: an output face that is an input face is its own
+// parent; one with two input vertices lies in the input face holding the directed edge between
+// them; every inserted vertex is matched to the two earlier vertices it is the midpoint of
+// (exactly, or after rounding to float32), which gives its carrier (the input vertex, edge or
+// face holding it), and a face lies in the input face holding its three carriers. Faces this
+// cannot place get the input face containing their centroid, among the input faces around their
+// input vertices or around a neighbouring face's parent (breadth-first over output faces). The
+// geometry checks then test the parents found like given ones. Geometry alone cannot place
+// needles thinner than a float32 step (a polygon's ears far from the origin), combinatorics can.
 //
 // Complexity: O((V + F) * (1 + average hashing cost)) for everything except the cycle check,
-// which costs O(L + (V + E) * m / 64 + m^3 / 64) for m cycles of total length L. Parent
-// inference costs O(sum over input vertices of degree^2) in the worst case (fans).
+// which costs O(L + (V + E) * m / 64 + m^3 / 64) for m cycles of total length L, and the
+// parent inference: O(F log F), plus for each inserted vertex the pairs among at most 256
+// vertices reachable from it, and the geometric fallback's stars (degree^2 around a fan's apex).
 #pragma once
 
 #include <cstddef>
@@ -162,10 +170,10 @@ struct VerifyFileOptions {
 
 /// A glTF OUT (.glb/.gltf written by `strip`, one TRIANGLE_STRIP primitive) is read with
 /// read_gltf_strip() (gltf.hpp, tinygltf), its faces decoded by verify_decode_strip(), parents
-/// inferred, and checked with VerifyInput::float32.
+/// inferred (from the split structure, see above), and checked with VerifyInput::float32.
 /// Reads the input mesh (read_mesh_file), the output mesh (read_output_mesh) and the optional
 /// files, then runs verify() (after the weld / repair / orient replay asked for). Parents come
-/// from the PLY `parent` property when present, else they are inferred geometrically.
+/// from the PLY `parent` property when present, else they are inferred (see above).
 /// \throw InputError (naming the file) when a file is missing, unreadable or malformed; the
 ///        verification results themselves are never thrown, they are in the report.
 VerifyReport verify_files(const std::string& in_path, const std::string& out_path, const VerifyFileOptions& options = {});

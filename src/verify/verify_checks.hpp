@@ -149,6 +149,11 @@ struct ParentFrame {
     [[nodiscard]] double plane_tol() const { return kRelTol * size + slack + round * (1 + size * stretch()); }
     [[nodiscard]] double bary_tol() const { return kRelTol + (slack + round) * stretch(); }
     [[nodiscard]] double stretch() const { return n2 > 0 ? size / std::sqrt(n2) : 0.0; }
+    /// How far below 0 twice the signed area of a face p, q, r (local units) may go from
+    /// rounding its corners (float32: a needle along an edge may come out flipped or flat).
+    [[nodiscard]] double orient_tol(const V3& p, const V3& q, const V3& r) const {
+        return 4 * (slack + round) * std::max({norm(sub(q, p)), norm(sub(r, q)), norm(sub(p, r))});
+    }
 };
 ParentFrame frame_of(const std::vector<Point3>& pts, const Triangle& t);
 
@@ -157,6 +162,10 @@ ParentFrame frame_of(const std::vector<Point3>& pts, const Triangle& t);
 /// its longest edge, between that edge's ends (all with tolerance 1e-9 relative to the size,
 /// plus rounding far from the origin).
 bool sliver_contains(const ParentFrame& p, const V3& world_q);
+
+/// Distance from q to the closed face, in its local units (exact enough for a sliver: no
+/// division by its area to find the nearest point outside it).
+double distance_to(const ParentFrame& p, const V3& world_q);
 
 /// Barycentric coordinates of the projection of q onto the parent's plane, and the distance
 /// of q from that plane.
@@ -189,6 +198,9 @@ struct Checked {
         return std::all_of(out.face_ok.begin(), out.face_ok.end(), [](bool b) { return b; });
     }
 };
+/// Each output face's parent from the split structure (each inserted vertex the midpoint of two
+/// earlier ones), kNo where it cannot tell (verify_carriers.cpp).
+std::vector<uint32_t> parents_from_splits(const VerifyInput& in);
 /// Each output face's input parent (verify_parents.cpp).
 std::vector<uint32_t> resolve_parents(const VerifyInput& in, const Adjacency& out, Failures& fails);
 void check_geometry(Checked& chk);                                               // verify_geometry.cpp

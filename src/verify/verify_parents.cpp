@@ -14,6 +14,9 @@ namespace singlestrip::verify_detail {
 
 namespace {
 
+/// A face's three corners, then its centroid.
+using Corners = std::array<V3, 4>;
+
 struct InputStars {
     std::vector<uint32_t> offset, faces;  // CSR: faces around each input vertex
 };
@@ -31,25 +34,45 @@ InputStars build_stars(size_t n, const std::vector<Triangle>& in_faces) {
     return s;
 }
 
-/// Best input face among candidates for point q, in three tiers: a well-conditioned face that
-/// contains q within kRelTol (the largest minimum barycentric coordinate wins), else a nearly
-/// degenerate one that contains it, else a well-conditioned one within the rounding allowance of
-/// ParentFrame::bary_tol (thin faces far from the origin). kNo when none contains q.
+/// Best input face among candidates for a face (its corners, then its centroid q), in four
+/// tiers: a well-conditioned face that contains q within kRelTol and in which the face keeps its
+/// orientation (the largest minimum barycentric coordinate wins), else a nearly degenerate one
+/// that contains q (the one nearest to all corners), else a well-conditioned one within the
+/// rounding allowance of ParentFrame::bary_tol (thin faces far from the origin), else one in
+/// which the face is flipped beyond rounding. The orientation ranks a needle lying along an edge between a
+/// well-conditioned face and the sliver across (float32: both hold it within tolerance) into
+/// the sliver, where it is. kNo when none contains q.
 uint32_t best_container(const std::vector<Point3>& in_pts, const std::vector<Triangle>& in_faces, const std::vector<uint32_t>& cand,
-                        const V3& q) {
-    uint32_t best = kNo, sliver = kNo, loose = kNo;
+                        const Corners& corners) {
+    const V3& q = corners[3];
+    uint32_t best = kNo, sliver = kNo, loose = kNo, flipped = kNo;
     double best_min = -std::numeric_limits<double>::infinity(), loose_min = best_min;
+    double sliver_far = std::numeric_limits<double>::infinity();
+    int sliver_held = -1;
     for (uint32_t f : cand) {
         const ParentFrame p = frame_of(in_pts, in_faces[f]);
         if (p.ill) {  // no reliable barycentrics: a robust containment test
-            if (sliver == kNo && sliver_contains(p, q)) sliver = f;
+            if (!sliver_contains(p, q)) continue;
+            // Neighbouring needles (a polygon's ears in float32) may all hold the centroid:
+            // the one that holds the most corners, then the nearest to all of them.
+            int held = 0;
+            double far = 0;
+            for (const V3& k : corners) {
+                held += sliver_contains(p, k) ? 1 : 0;
+                far = std::max(far, distance_to(p, k) / p.scale);
+            }
+            if (held > sliver_held || (held == sliver_held && far < sliver_far)) sliver = f, sliver_held = held, sliver_far = far;
             continue;
         }
         double dist = 0;
         const auto l = bary(p, q, dist);
         if (!(dist <= p.plane_tol())) continue;
         const double m = std::min({l[0], l[1], l[2]});
-        if (dist <= kRelTol * p.size && m >= -kRelTol && m > best_min) {
+        const V3 a = p.local(corners[0]), b = p.local(corners[1]), c = p.local(corners[2]);
+        const double area2 = dot(crs(sub(b, a), sub(c, a)), p.n) / std::sqrt(p.n2);  // twice the signed area in p's plane
+        if (!(area2 >= -p.orient_tol(a, b, c))) {
+            if (m >= -p.bary_tol() && flipped == kNo) flipped = f;
+        } else if (dist <= kRelTol * p.size && m >= -kRelTol && m > best_min) {
             best_min = m;
             best = f;
         } else if (m >= -p.bary_tol() && m > loose_min) {
@@ -57,61 +80,57 @@ uint32_t best_container(const std::vector<Point3>& in_pts, const std::vector<Tri
             loose = f;
         }
     }
-    return best != kNo ? best : sliver != kNo ? sliver : loose;
+    return best != kNo ? best : sliver != kNo ? sliver : loose != kNo ? loose : flipped;
 }
 
+/// Parents without a parent array (glTF): combinatorics first, geometry where it cannot decide.
+/// Float32 needles make geometry ambiguous (a polygon's ear thinner than a float32 step lies
+/// within the tolerance of its neighbours), so a face with three input vertices is its own parent
+/// when it is an input face, and a face with two lies in the one input face holding the directed
+/// edge between them (a child keeps its parent's orientation; the face across holds the edge
+/// reversed). Faces with one input vertex: the best container in its star. Faces with none:
+/// breadth-first from the others, an output neighbour's parent first.
 std::vector<uint32_t> infer_parents(const VerifyInput& in, const Adjacency& out, const InputStars& stars, Failures& fails) {
     const size_t n = in.in_points.size();
     const size_t F = in.out_faces.size();
     std::vector<uint32_t> parent(F, kNo);
     std::vector<uint32_t> queue;
     std::vector<uint32_t> cand;
-    auto centroid = [&](uint32_t f) {
+    auto corners = [&](uint32_t f) {
         const Triangle& t = in.out_faces[f];
-        V3 c{0, 0, 0};
-        for (uint32_t v : t)
-            for (int k = 0; k < 3; ++k) c[static_cast<size_t>(k)] += in.out_points[v][static_cast<size_t>(k)] / 3.0;
+        Corners c{};
+        for (size_t i = 0; i < 3; ++i)
+            for (size_t k = 0; k < 3; ++k) {
+                c[i][k] = in.out_points[t[i]][k];
+                c[3][k] += c[i][k] / 3.0;
+            }
         return c;
     };
     auto add_star = [&](uint32_t v) {
         for (uint32_t i = stars.offset[v]; i < stars.offset[v + 1]; ++i) cand.push_back(stars.faces[i]);
     };
+    auto add_input_stars = [&](uint32_t f) {
+        for (uint32_t v : in.out_faces[f])
+            if (v < n) add_star(v);
+    };
+    auto inputs = [&](uint32_t f) {
+        return static_cast<int>(std::count_if(in.out_faces[f].begin(), in.out_faces[f].end(), [&](uint32_t v) { return v < n; }));
+    };
+    auto assign = [&](uint32_t f, uint32_t p) {
+        if (p == kNo) return;
+        parent[f] = p;
+        queue.push_back(f);
+    };
+    auto container = [&](uint32_t f) { return best_container(in.in_points, in.in_faces, cand, corners(f)); };
+    const std::vector<uint32_t> from_splits = parents_from_splits(in);
     for (uint32_t f = 0; f < F; ++f) {
         if (!out.face_ok[f]) continue;
-        cand.clear();
-        const Triangle& t = in.out_faces[f];
-        std::array<uint32_t, 3> orig{};
-        int no = 0;
-        for (uint32_t v : t)
-            if (v < n) orig[static_cast<size_t>(no++)] = v;
-        if (no == 0) continue;
-        if (no >= 2) {
-            // Faces containing both of two original vertices: intersect the stars.
-            for (uint32_t i = stars.offset[orig[0]]; i < stars.offset[orig[0] + 1]; ++i) {
-                const Triangle& it = in.in_faces[stars.faces[i]];
-                for (int j = 1; j < no; ++j) {
-                    const uint32_t w = orig[static_cast<size_t>(j)];
-                    if (it[0] == w || it[1] == w || it[2] == w) {
-                        cand.push_back(stars.faces[i]);
-                        break;
-                    }
-                }
-            }
-            if (no == 3)  // the pair (orig[1], orig[2]) too
-                for (uint32_t i = stars.offset[orig[1]]; i < stars.offset[orig[1] + 1]; ++i) {
-                    const Triangle& it = in.in_faces[stars.faces[i]];
-                    if (it[0] == orig[2] || it[1] == orig[2] || it[2] == orig[2]) cand.push_back(stars.faces[i]);
-                }
-        }
-        uint32_t p = best_container(in.in_points, in.in_faces, cand, centroid(f));
-        if (p == kNo) {
+        if (from_splits[f] != kNo) {
+            assign(f, from_splits[f]);
+        } else if (inputs(f) > 0) {  // the split structure not found: geometry in the stars
             cand.clear();
-            for (int j = 0; j < no; ++j) add_star(orig[static_cast<size_t>(j)]);
-            p = best_container(in.in_points, in.in_faces, cand, centroid(f));
-        }
-        if (p != kNo) {
-            parent[f] = p;
-            queue.push_back(f);
+            add_input_stars(f);
+            assign(f, container(f));
         }
     }
     // Breadth-first over edge-adjacent output faces for faces made only of inserted vertices.
@@ -122,18 +141,14 @@ std::vector<uint32_t> infer_parents(const VerifyInput& in, const Adjacency& out,
             if (tw == kNo) continue;
             const uint32_t g = tw / 3;
             if (parent[g] != kNo || !out.face_ok[g]) continue;
-            const Triangle& P = in.in_faces[parent[f]];
             cand.assign(1, parent[f]);
-            uint32_t p = best_container(in.in_points, in.in_faces, cand, centroid(g));
+            uint32_t p = container(g);
             if (p == kNo) {
                 cand.clear();
-                for (uint32_t v : P) add_star(v);
-                p = best_container(in.in_points, in.in_faces, cand, centroid(g));
+                for (uint32_t v : in.in_faces[parent[f]]) add_star(v);
+                p = container(g);
             }
-            if (p != kNo) {
-                parent[g] = p;
-                queue.push_back(g);
-            }
+            assign(g, p);
         }
     }
     for (uint32_t f = 0; f < F; ++f)

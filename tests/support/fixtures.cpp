@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <random>
 #include <string>
 #include <unordered_map>
 #include <utility>
@@ -153,6 +154,26 @@ TriangleSoup make_corridor(uint32_t k) {
             s.triangles.push_back({i + 1, i, i + 2});
     }
     return s;
+}
+
+TriangleSoup make_circle_polygon(uint32_t n, double radius, Point3 centre, uint32_t seed) {
+    TriangleSoup soup;
+    for (uint32_t i = 0; i < n; ++i) {
+        const double t = 2 * std::numbers::pi * i / n;
+        soup.points.push_back({centre[0] + radius * std::cos(t), centre[1] + radius * std::sin(t), centre[2]});
+    }
+    std::mt19937 rng(seed);
+    std::vector<std::pair<uint32_t, uint32_t>> todo{{0, n - 1}};
+    while (!todo.empty()) {
+        const auto [i, j] = todo.back();
+        todo.pop_back();
+        if (j - i < 2) continue;
+        const uint32_t k = i + 1 + static_cast<uint32_t>(rng() % (j - i - 1));
+        soup.triangles.push_back({i, k, j});
+        todo.push_back({i, k});
+        todo.push_back({k, j});
+    }
+    return soup;
 }
 
 TriangleSoup make_grid_disk(uint32_t nx, uint32_t ny) {

@@ -62,6 +62,12 @@ TriangleSoup make_corridor(uint32_t k);
 /// checkerboard). \pre nx, ny >= 1. V=(nx+1)(ny+1), F=2 nx ny, chi=1, b=1, g=0.
 TriangleSoup make_grid_disk(uint32_t nx, uint32_t ny);
 
+/// Convex polygon of n points on a circle of the given radius around `centre`, triangulated by
+/// random diagonals (seeded): the dual graph is a tree and most faces are ears thinner than
+/// 1e-7 radius (n = 20000), thinner than a float32 step far from the origin. \pre n >= 3.
+/// V=n, F=n-2, chi=1, b=1, g=0.
+TriangleSoup make_circle_polygon(uint32_t n, double radius = 1, Point3 centre = {0, 0, 0}, uint32_t seed = 7);
+
 /// Planar ring: n_around segments around, n_radial quad rings between radius 1 and 2.
 /// \pre n_around >= 3, n_radial >= 1. V=n_around (n_radial+1), F=2 n_around n_radial,
 /// chi=0, b=2, g=0.
