@@ -95,6 +95,13 @@ inline std::string check_result(const PipelineResult& r, const Request& req, con
     // constraints and source/target: verify() checks count and independence.
     if (r.cycles) vi.cycles = r.cycles->cycles;
     if (VerifyReport rep = verify(vi); !rep.ok()) return "verify failed:\n" + rep.to_string();
+    if (r.face_origin.empty()) {  // as for an OBJ/OFF output: parents inferred (verify.hpp)
+        where = "verify_inferred_parents";
+        const std::vector<uint32_t> given = std::move(vi.out_parent);
+        vi.out_parent.clear();
+        if (VerifyReport rep = verify(vi); !rep.ok()) return "verify failed with inferred parents:\n" + rep.to_string();
+        vi.out_parent = given;
+    }
     // Several components: r.strip holds only the totals (pipeline.hpp), and verify() checks
     // cycles on one-component outputs only.
     if (!req.cycles || r.components.size() != 1) return {};

@@ -86,15 +86,16 @@ private:
 struct Neighbours {
     std::vector<uint32_t> offset, list;
     Neighbours(size_t n, const std::vector<Triangle>& faces) : offset(n + 1, 0) {
+        auto in_range = [n](const Triangle& t) { return t[0] < n && t[1] < n && t[2] < n; };  // garbage is skipped
         for (const Triangle& t : faces)
-            for (uint32_t v : t)
-                if (v < n) offset[v + 1] += 2;
+            if (in_range(t))
+                for (uint32_t v : t) offset[v + 1] += 2;
         for (size_t i = 0; i < n; ++i) offset[i + 1] += offset[i];
         list.resize(offset[n]);
         std::vector<uint32_t> fill(offset.begin(), offset.end() - 1);
         for (const Triangle& t : faces)
-            for (size_t i = 0; i < 3; ++i)
-                if (t[i] < n) {
+            if (in_range(t))
+                for (size_t i = 0; i < 3; ++i) {
                     list[fill[t[i]]++] = t[(i + 1) % 3];
                     list[fill[t[i]]++] = t[(i + 2) % 3];
                 }
