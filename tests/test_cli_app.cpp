@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -164,6 +165,44 @@ TEST(CliApp, IndexBaseOne) {
     const Exec edge = cli("strip " + q(kRoom) + " -o " + q(s / "x.ply") + " --constraints " + q(s / "notedge1.txt") + " --index-base 1");
     EXPECT_EQ(edge.code, 4);
     EXPECT_TRUE(has(edge, "counted from 0 here")) << edge.out;
+}
+
+// Coordinates near the top of double's range (+-1.7e308): a midpoint summed first would be
+// infinite (an output with a non-finite vertex, exit 0, before the fix); float32 formats cannot
+// hold them at all and are refused before anything is written; a route longer than double's
+// range has a null length in JSON.
+TEST(CliApp, CoordinatesNearTheTopOfDoublesRange) {
+    Scratch s("huge");
+    std::ostringstream off;
+    off.precision(17);
+    const int n = 20;
+    off << "OFF\n" << (n + 1) * (n + 1) << ' ' << 2 * n * n << " 0\n";
+    for (int y = 0; y <= n; ++y)
+        for (int x = 0; x <= n; ++x) off << 1.7e308 * (x / 10.0 - 1) << ' ' << 1.7e308 * (y / 10.0 - 1) << " 0\n";
+    for (int y = 0; y < n; ++y)
+        for (int x = 0; x < n; ++x) {
+            const int a = y * (n + 1) + x, b = a + 1, c = a + n + 1, d = c + 1;
+            off << "3 " << a << ' ' << b << ' ' << d << "\n3 " << a << ' ' << d << ' ' << c << '\n';
+        }
+    spit(s / "huge.off", off.str());
+    for (const char* engine : {"matching", "growth"}) {
+        const Exec r =
+            cli("strip " + q(s / "huge.off") + " -o " + q(s / "huge.ply") + " --engine " + engine + " --path " + q(s / "r.json"));
+        ASSERT_EQ(r.code, 0) << r.out;
+        const Exec v = cli("verify " + q(s / "huge.off") + " " + q(s / "huge.ply"));
+        EXPECT_EQ(v.code, 0) << engine << ": " << v.out;
+        const json j = json::parse(slurp(s / "r.json"));
+        EXPECT_TRUE(j["length"].is_null());
+        for (const json& p : j["points"]) EXPECT_TRUE(std::isfinite(p["x"].get<double>()));
+    }
+    for (const char* ext : {"glb", "stl"}) {
+        const fs::path out = s / (std::string("huge.") + ext);
+        const Exec r = cli("strip " + q(s / "huge.off") + " -o " + q(out) + " --indices " + q(s / "huge.idx"));
+        EXPECT_EQ(r.code, 4) << r.out;
+        EXPECT_TRUE(has(r, "beyond float32's range")) << r.out;
+        EXPECT_FALSE(fs::exists(out));
+        EXPECT_FALSE(fs::exists(s / "huge.idx"));
+    }
 }
 
 TEST(CliApp, PathFiles) {

@@ -11,6 +11,7 @@
 #include "core/id_vector.hpp"
 #include "singlestrip/errors.hpp"
 #include "singlestrip/tree_cotree.hpp"
+#include "singlestrip/vec3.hpp"
 
 namespace singlestrip {
 
@@ -138,14 +139,12 @@ struct MeshFaces {
 template <class Faces>
 Point3 centroid(const Faces& a, uint32_t f) {
     const Triangle t = a.face(f);
-    Point3 c{0, 0, 0};
-    for (uint32_t v : t)
-        for (int i = 0; i < 3; ++i) c[i] += a.point(v)[i] / 3.0;
-    return c;
+    return vec3::centroid(a.point(t[0]), a.point(t[1]), a.point(t[2]));
 }
 
+// In halves: differences of coordinates near +-1.7e308 overflow (hypot scales the rest).
 double distance(const Point3& p, const Point3& q) {
-    return std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]));
+    return 2 * std::hypot(p[0] * 0.5 - q[0] * 0.5, p[1] * 0.5 - q[1] * 0.5, p[2] * 0.5 - q[2] * 0.5);
 }
 
 /// Midpoint of the edge shared by faces f and g; false if they share fewer than two vertices.
@@ -157,7 +156,7 @@ bool shared_midpoint(const Faces& a, uint32_t f, uint32_t g, Point3& out) {
     for (uint32_t v : tf)
         if (std::find(tg.begin(), tg.end(), v) != tg.end() && n < 2) common[n++] = v;
     if (n < 2) return false;
-    for (int i = 0; i < 3; ++i) out[i] = 0.5 * (a.point(common[0])[i] + a.point(common[1])[i]);
+    out = vec3::midpoint(a.point(common[0]), a.point(common[1]));
     return true;
 }
 

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "singlestrip/mesh.hpp"
+#include "singlestrip/vec3.hpp"
 
 namespace singlestrip {
 namespace {
@@ -23,9 +24,7 @@ uint32_t spread3(uint32_t x) {
 }
 
 Point3 centroid(const std::vector<Point3>& points, const Triangle& t) {
-    Point3 c{};
-    for (int i = 0; i < 3; ++i) c[i] = (points[t[0]][i] + points[t[1]][i] + points[t[2]][i]) / 3.0;
-    return c;
+    return vec3::centroid(points[t[0]], points[t[1]], points[t[2]]);
 }
 
 // The box is the points' (one sequential pass), not the centroids': an unused far point only
@@ -42,9 +41,10 @@ std::vector<uint32_t> morton_codes(const std::vector<Point3>& points, const std:
         const Point3 c = centroid(points, triangles[f]);
         uint32_t key = 0;
         for (int i = 0; i < 3; ++i) {
-            const double extent = hi[i] - lo[i];
-            const double s = std::isfinite(c[i]) && extent > 0 ? (c[i] - lo[i]) / extent : 0.0;
-            key |= spread3(static_cast<uint32_t>(std::clamp(s, 0.0, 1.0) * cells)) << i;
+            // In halves: the extent of coordinates near +-1.7e308 overflows; s NaN-free.
+            const double extent = hi[i] * 0.5 - lo[i] * 0.5;
+            const double s = std::isfinite(c[i]) && extent > 0 ? (c[i] * 0.5 - lo[i] * 0.5) / extent : 0.0;
+            key |= spread3(static_cast<uint32_t>(std::clamp(s >= 0 ? s : 0.0, 0.0, 1.0) * cells)) << i;
         }
         code[f] = key;
     }

@@ -1,5 +1,6 @@
 // singlestrip — mesh core: corner table construction, midpoint split, topology queries.
 #include "singlestrip/mesh.hpp"
+#include "singlestrip/vec3.hpp"
 
 #include <algorithm>
 #include <numeric>
@@ -154,7 +155,7 @@ SplitResult Mesh::split_edge(HalfedgeId he) {
     const auto& pa = points_[a];
     const auto& pb = points_[b];
     const uint32_t mid = static_cast<uint32_t>(points_.size());
-    points_.push_back({(pa[0] + pb[0]) * 0.5, (pa[1] + pb[1]) * 0.5, (pa[2] + pb[2]) * 0.5});
+    points_.push_back(vec3::midpoint(pa, pb));
     vertex_halfedge_.push_back(kNone);
 
     const uint32_t fb = num_faces(), ga = fb + 1;

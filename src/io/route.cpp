@@ -6,15 +6,14 @@
 #include <string>
 
 #include "singlestrip/errors.hpp"
+#include "singlestrip/vec3.hpp"
 
 namespace singlestrip {
 namespace {
 
 Point3 centroid(const StripArrays& a, uint32_t f) {
     const Triangle& t = a.faces[f];
-    Point3 c{};
-    for (int k = 0; k < 3; ++k) c[k] = (a.points[t[0]][k] + a.points[t[1]][k] + a.points[t[2]][k]) / 3.0;
-    return c;
+    return vec3::centroid(a.points[t[0]], a.points[t[1]], a.points[t[2]]);
 }
 
 /// Midpoint of the edge faces f and g share; false when they share none (g starts the next
@@ -25,14 +24,13 @@ bool shared_midpoint(const StripArrays& a, uint32_t f, uint32_t g, Point3& mid) 
     for (uint32_t v : a.faces[f])
         if (std::find(a.faces[g].begin(), a.faces[g].end(), v) != a.faces[g].end() && n < 3) shared[n++] = v;
     if (n != 2) return false;
-    const Point3& p = a.points[shared[0]];
-    const Point3& q = a.points[shared[1]];
-    mid = {(p[0] + q[0]) / 2.0, (p[1] + q[1]) / 2.0, (p[2] + q[2]) / 2.0};
+    mid = vec3::midpoint(a.points[shared[0]], a.points[shared[1]]);
     return true;
 }
 
+// In halves: differences of coordinates near +-1.7e308 overflow (hypot scales the rest).
 double distance(const Point3& p, const Point3& q) {
-    return std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]));
+    return 2 * std::hypot(p[0] * 0.5 - q[0] * 0.5, p[1] * 0.5 - q[1] * 0.5, p[2] * 0.5 - q[2] * 0.5);
 }
 
 /// Every vertex of a face has the same z, up to 1e-9 of the mesh's extent (rounding in the

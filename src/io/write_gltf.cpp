@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "float32_range.hpp"
 #include "singlestrip/errors.hpp"
 #include "singlestrip/gltf.hpp"
 #include "singlestrip/io.hpp"
@@ -233,6 +234,7 @@ void write_gltf_strip(const std::string& path, const StripArrays& a, const std::
     if (ext != ".glb" && ext != ".gltf") throw RequestError(path + ": glTF output needs the extension .glb or .gltf");
     if (strip_indices.empty() || a.faces.empty()) throw RequestError(path + ": nothing to write (empty strip)");
     const size_t nv = a.points.size();
+    check_float32_range(path, a.points, "glTF");
     const bool short_indices = max_strip_index(path, strip_indices, nv) < 65535u;  // 65535 is the (forbidden) restart value
 
     const VertexAttribute* given = find_attribute(a.attributes, "NORMAL");

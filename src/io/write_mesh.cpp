@@ -16,6 +16,7 @@
 #include <utility>
 #include <vector>
 
+#include "float32_range.hpp"
 #include "singlestrip/attributes.hpp"
 #include "singlestrip/errors.hpp"
 #include "singlestrip/io.hpp"
@@ -286,6 +287,7 @@ void write_strip_mesh(const std::string& path, const std::vector<Point3>& points
                 throw InternalError("write_strip_mesh: face " + std::to_string(f) + " references vertex " + std::to_string(v) + " of " +
                                     std::to_string(points.size()));
     if (const std::string bad = attribute_problem(attributes, points.size()); !bad.empty()) throw InternalError("write_strip_mesh: " + bad);
+    if (fmt == OutputFormat::Stl) check_float32_range(path, points, "binary STL");
     write_atomically(path, [&](std::ofstream& out) {
         switch (fmt) {
             case OutputFormat::Ply:

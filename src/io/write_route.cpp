@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cctype>
 #include <charconv>
+#include <cmath>
 #include <filesystem>
 #include <string>
 
@@ -18,6 +19,11 @@ std::string num(double v) {
     auto res = std::to_chars(buf, buf + sizeof buf, v);
     return std::string(buf, res.ptr);
 }
+/// For JSON, which has no infinity: a length beyond double's range (a route over coordinates
+/// near 1e308) is null.
+std::string jnum(double v) {
+    return std::isfinite(v) ? num(v) : "null";
+}
 
 const char* kind(const RoutePoint& p) {
     return p.jump ? "start" : p.centroid ? "centroid" : "edge";
@@ -32,12 +38,12 @@ std::string csv(const Route& r) {
 }
 
 std::string json(const Route& r) {
-    std::string s = "{\"length\": " + num(r.length) + ", \"planar_z\": " + (r.planar_z ? "true" : "false") + ", \"points\": [";
+    std::string s = "{\"length\": " + jnum(r.length) + ", \"planar_z\": " + (r.planar_z ? "true" : "false") + ", \"points\": [";
     for (size_t i = 0; i < r.points.size(); ++i) {
         const RoutePoint& p = r.points[i];
         s += std::string(i ? ",\n  " : "\n  ") + "{\"x\": " + num(p.position[0]) + ", \"y\": " + num(p.position[1]) +
              ", \"z\": " + num(p.position[2]) + ", \"face\": " + std::to_string(p.face) + ", \"parent\": " + std::to_string(p.parent) +
-             ", \"kind\": \"" + kind(p) + "\", \"distance\": " + num(p.distance) + "}";
+             ", \"kind\": \"" + kind(p) + "\", \"distance\": " + jnum(p.distance) + "}";
     }
     return s + (r.points.empty() ? "]}\n" : "\n]}\n");
 }
@@ -73,7 +79,7 @@ std::string geojson_feature(const Route& r, size_t b, size_t e, size_t strip) {
     const double length = (e < r.points.size() ? r.points[e - 1].distance : r.length) - r.points[b].distance;
     return "{\"type\": \"Feature\",\n \"geometry\": {\"type\": \"LineString\", \"coordinates\": [" + coords +
            "]},\n \"properties\": {\"name\": \"singlestrip route" + (strip ? " " + std::to_string(strip) : std::string()) +
-           "\", \"length\": " + num(length) + ", \"z\": " + num(r.points[b].position[2]) + ", \"faces\": [" + faces + "]}}";
+           "\", \"length\": " + jnum(length) + ", \"z\": " + num(r.points[b].position[2]) + ", \"faces\": [" + faces + "]}}";
 }
 
 std::string geojson(const Route& r) {

@@ -6,6 +6,7 @@
 // needles collapse (an ear thinner than a float32 step), geometry cannot tell neighbouring
 // faces apart, this can. The geometry checks then test what it found like a given parent.
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <initializer_list>
@@ -102,6 +103,12 @@ struct Neighbours {
     }
 };
 
+/// The engines' midpoint (vec3::mid): halves added only where the sum overflows.
+double half_sum(double a, double b) {
+    const double s = a + b;
+    return std::isfinite(s) ? s * 0.5 : a * 0.5 + b * 0.5;
+}
+
 bool same_stored(const Point3& computed, const Point3& stored, bool float32) {
     for (size_t k = 0; k < 3; ++k)
         if (float32 ? static_cast<float>(computed[k]) != static_cast<float>(stored[k]) : computed[k] != stored[k]) return false;
@@ -177,7 +184,7 @@ std::vector<uint32_t> parents_from_splits(const VerifyInput& in) {
         for (size_t j = 1; j < ends.size() && cell[s].dim == 3; ++j)
             for (size_t i = 0; i < j; ++i) {
                 const Point3 &x = exact[ends[i]], &y = exact[ends[j]];
-                const Point3 mid{(x[0] + y[0]) * 0.5, (x[1] + y[1]) * 0.5, (x[2] + y[2]) * 0.5};
+                const Point3 mid{half_sum(x[0], y[0]), half_sum(x[1], y[1]), half_sum(x[2], y[2])};
                 if (!same_stored(mid, in.out_points[s], in.float32)) continue;
                 const Cell c = cells.meet(cell[ends[i]], cell[ends[j]]);
                 if (c.dim == 3 || !fits_around(s, c, nb, cells, cell)) continue;
