@@ -171,20 +171,24 @@ TEST(CliApp, IndexBaseOne) {
 // infinite (an output with a non-finite vertex, exit 0, before the fix); float32 formats cannot
 // hold them at all and are refused before anything is written; a route longer than double's
 // range has a null length in JSON.
-TEST(CliApp, CoordinatesNearTheTopOfDoublesRange) {
-    Scratch s("huge");
+std::string grid_off(double cell, double offset) {
     std::ostringstream off;
     off.precision(17);
     const int n = 20;
     off << "OFF\n" << (n + 1) * (n + 1) << ' ' << 2 * n * n << " 0\n";
     for (int y = 0; y <= n; ++y)
-        for (int x = 0; x <= n; ++x) off << 1.7e308 * (x / 10.0 - 1) << ' ' << 1.7e308 * (y / 10.0 - 1) << " 0\n";
+        for (int x = 0; x <= n; ++x) off << offset + cell * (x - n / 2) << ' ' << offset + cell * (y - n / 2) << " 0\n";
     for (int y = 0; y < n; ++y)
         for (int x = 0; x < n; ++x) {
             const int a = y * (n + 1) + x, b = a + 1, c = a + n + 1, d = c + 1;
             off << "3 " << a << ' ' << b << ' ' << d << "\n3 " << a << ' ' << d << ' ' << c << '\n';
         }
-    spit(s / "huge.off", off.str());
+    return off.str();
+}
+
+TEST(CliApp, CoordinatesNearTheTopOfDoublesRange) {
+    Scratch s("huge");
+    spit(s / "huge.off", grid_off(1.7e307, 0));
     for (const char* engine : {"matching", "growth"}) {
         const Exec r =
             cli("strip " + q(s / "huge.off") + " -o " + q(s / "huge.ply") + " --engine " + engine + " --path " + q(s / "r.json"));
@@ -203,6 +207,15 @@ TEST(CliApp, CoordinatesNearTheTopOfDoublesRange) {
         EXPECT_FALSE(fs::exists(out));
         EXPECT_FALSE(fs::exists(s / "huge.idx"));
     }
+    // A mesh inside float32's subnormals (largest coordinate 1e-40): glTF would keep a step of
+    // 1.4e-45, 1e-5 of the mesh; double formats keep it whole.
+    spit(s / "tiny.off", grid_off(1e-41, 0));
+    const Exec tiny = cli("strip " + q(s / "tiny.off") + " -o " + q(s / "tiny.glb"));
+    EXPECT_EQ(tiny.code, 4) << tiny.out;
+    EXPECT_TRUE(has(tiny, "below float32's normal range")) << tiny.out;
+    EXPECT_FALSE(fs::exists(s / "tiny.glb"));
+    ASSERT_EQ(cli("strip " + q(s / "tiny.off") + " -o " + q(s / "tiny.ply")).code, 0);
+    EXPECT_EQ(cli("verify " + q(s / "tiny.off") + " " + q(s / "tiny.ply")).code, 0);
 }
 
 TEST(CliApp, PathFiles) {

@@ -73,7 +73,8 @@ ParentFrame frame_of(const std::vector<Point3>& pts, const Triangle& t) {
     double m = 0;
     for (const V3* q : {&p.a, &p.b, &p.c})
         for (double x : *q) m = std::max(m, std::abs(x));
-    p.slack = kFloatSlack * m;
+    // float32 output: 4 ulps of the coordinates, and 4 steps of float32's subnormals near 0.
+    p.slack = kFloatSlack * m + (kFloatSlack > 0 ? 4 * std::numeric_limits<float>::denorm_min() * p.scale : 0.0);
     p.round = 16 * std::numeric_limits<double>::epsilon() * m;
     p.area_tol = kRelTol * p.size * p.size + 64 * std::numeric_limits<double>::epsilon() * m * p.size + 8 * p.slack * p.size;
     // Also nearly degenerate at the coordinates' precision: a height (|n| / size) within 16
