@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -90,7 +91,7 @@ uint32_t best_container(const std::vector<Point3>& in_pts, const std::vector<Tri
 /// edge between them (a child keeps its parent's orientation; the face across holds the edge
 /// reversed). Faces with one input vertex: the best container in its star. Faces with none:
 /// breadth-first from the others, an output neighbour's parent first.
-std::vector<uint32_t> infer_parents(const VerifyInput& in, const Adjacency& out, const InputStars& stars, Failures& fails) {
+std::vector<uint32_t> infer_parents(const VerifyInput& in, const Adjacency& out, Failures& fails) {
     const size_t n = in.in_points.size();
     const size_t F = in.out_faces.size();
     std::vector<uint32_t> parent(F, kNo);
@@ -106,8 +107,10 @@ std::vector<uint32_t> infer_parents(const VerifyInput& in, const Adjacency& out,
             }
         return c;
     };
+    std::optional<InputStars> stars;
     auto add_star = [&](uint32_t v) {
-        for (uint32_t i = stars.offset[v]; i < stars.offset[v + 1]; ++i) cand.push_back(stars.faces[i]);
+        if (!stars) stars = build_stars(n, in.in_faces);  // only for what the split structure leaves
+        for (uint32_t i = stars->offset[v]; i < stars->offset[v + 1]; ++i) cand.push_back(stars->faces[i]);
     };
     auto add_input_stars = [&](uint32_t f) {
         for (uint32_t v : in.out_faces[f])
@@ -161,7 +164,6 @@ std::vector<uint32_t> infer_parents(const VerifyInput& in, const Adjacency& out,
 
 // Each output face's input parent: the given array, checked, or inferred from the geometry.
 std::vector<uint32_t> resolve_parents(const VerifyInput& in, const Adjacency& out, Failures& fails) {
-    const size_t n = in.in_points.size();
     const size_t F = in.out_faces.size();
     if (!in.out_parent.empty()) {
         std::vector<uint32_t> parent = in.out_parent;
@@ -177,8 +179,7 @@ std::vector<uint32_t> resolve_parents(const VerifyInput& in, const Adjacency& ou
             }
         return parent;
     }
-    const InputStars stars = build_stars(n, in.in_faces);
-    return infer_parents(in, out, stars, fails);
+    return infer_parents(in, out, fails);
 }
 
 }  // namespace singlestrip::verify_detail
