@@ -3,6 +3,7 @@
 //   verify_adjacency.cpp   the verifier's own half-edge adjacency (manifoldness, Euler, loops);
 //   verify_geometry.cpp    geometry primitives, faces inside their parents, boundary tiling;
 //   verify_parents.cpp     each output face's parent: given and checked, or inferred;
+//   verify_carriers.cpp    inferred parents from the split structure (no tolerance);
 //   verify_strips.cpp      the GL decoder, one strip per component, the index sequence;
 //   verify_constraints.cpp constraint edges, source and target;
 //   verify_cycles.cpp      the fundamental cycles: count, closed chains, independence in H1.
