@@ -116,9 +116,10 @@ bool same_stored(const Point3& computed, const Point3& stored, bool float32) {
 }
 
 /// Vertices below s reachable from s through vertices above it: the ends of the edge s split,
-/// even after later splits of its halves put inserted vertices between (at most kReach visited).
+/// even after later splits of its halves put inserted vertices between (at most kReach visited,
+/// kEnds kept: the pairs tried stay bounded around a vertex of high valence).
 void earlier_ends(uint32_t s, const Neighbours& nb, std::vector<uint32_t>& seen, std::vector<uint32_t>& stack, std::vector<uint32_t>& out) {
-    constexpr size_t kReach = 256;
+    constexpr size_t kReach = 256, kEnds = 128;
     out.clear();
     stack.assign(1, s);
     seen[s] = s;
@@ -131,10 +132,12 @@ void earlier_ends(uint32_t s, const Neighbours& nb, std::vector<uint32_t>& seen,
             const uint32_t w = nb.list[i];
             if (seen[w] == s) continue;
             seen[w] = s;
-            if (w < s)
-                out.push_back(w);
-            else
+            if (w >= s) {
                 stack.push_back(w);
+                continue;
+            }
+            out.push_back(w);
+            if (out.size() == kEnds) return;
         }
     }
 }
