@@ -28,9 +28,11 @@ bool shared_midpoint(const StripArrays& a, uint32_t f, uint32_t g, Point3& mid) 
     return true;
 }
 
-// In halves: differences of coordinates near +-1.7e308 overflow (hypot scales the rest).
+// Where the squares overflow (coordinates near +-1.7e308), again in halves with hypot (which
+// scales; too slow for every step of a long cycle or route).
 double distance(const Point3& p, const Point3& q) {
-    return 2 * std::hypot(p[0] * 0.5 - q[0] * 0.5, p[1] * 0.5 - q[1] * 0.5, p[2] * 0.5 - q[2] * 0.5);
+    const double d = std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]));
+    return std::isfinite(d) ? d : 2 * std::hypot(p[0] * 0.5 - q[0] * 0.5, p[1] * 0.5 - q[1] * 0.5, p[2] * 0.5 - q[2] * 0.5);
 }
 
 /// Every vertex of a face has the same z, up to 1e-9 of the mesh's extent (rounding in the
