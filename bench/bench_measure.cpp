@@ -457,14 +457,10 @@ EngineRun measure_engine(const Spec& spec, ss::StripEngine engine, const std::st
     r.status = 0;
     if (spec.has_cycles) {
         try {
-            // A median of up to three passes: a single one of a 20 ms stage caught a load spike
-            // (cheese.off, growth: 33.7 ms once, 14 ms in every other run).
-            std::vector<double> tcyc;
-            const auto started = Clock::now();
-            for (int rep = 0; rep < 3 && (rep == 0 || seconds_since(started) < 2.0); ++rep) {
+            std::vector<double> tcyc;  // median of up to 3 passes: one caught a load spike
+            for (const auto t0 = Clock::now(); tcyc.size() < 3 && (tcyc.empty() || seconds_since(t0) < 2.0);) {
                 const Pass p = strip_once(spec, options, true);
-                r.cycles = p.num_cycles;
-                tcyc.push_back(p.cycles);
+                r.cycles = p.num_cycles, tcyc.push_back(p.cycles);
             }
             r.t_cycles = median(tcyc);
         } catch (const std::exception& e) {
