@@ -27,6 +27,13 @@ inline Point3 normalized(const Point3& a) {
     return l > 0 ? Point3{a[0] / l, a[1] / l, a[2] / l} : Point3{0, 0, 0};
 }
 
+/// |a - b|; where the squares overflow (coordinates near +-1.7e308), again in halves with hypot
+/// (which scales, but is too slow for every step of a long cycle or route).
+inline double distance(const Point3& a, const Point3& b) {
+    const double d = norm(sub(a, b));
+    return std::isfinite(d) ? d : 2 * std::hypot(a[0] * 0.5 - b[0] * 0.5, a[1] * 0.5 - b[1] * 0.5, a[2] * 0.5 - b[2] * 0.5);
+}
+
 /// (a + b) / 2 without overflow: the halves are added only where the sum overflows (coordinates
 /// beyond 8.9e307), so every other midpoint is the correctly rounded (a + b) / 2, bit for bit.
 inline double mid(double a, double b) {

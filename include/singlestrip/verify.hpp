@@ -62,8 +62,8 @@
 //
 // Complexity: O((V + F) * (1 + average hashing cost)) for everything except the cycle check,
 // which costs O(L + (V + E) * m / 64 + m^3 / 64) for m cycles of total length L, and the
-// parent inference: O(F log F), plus for each inserted vertex the pairs among at most 256
-// vertices reachable from it, and the geometric fallback's stars (degree^2 around a fan's apex).
+// parent inference: O(F log F), plus for each inserted vertex the pairs among at most 128
+// earlier vertices reachable from it, and the geometric fallback's stars (degree^2 around a fan's apex).
 #pragma once
 
 #include <cstddef>

@@ -142,13 +142,6 @@ Point3 centroid(const Faces& a, uint32_t f) {
     return vec3::centroid(a.point(t[0]), a.point(t[1]), a.point(t[2]));
 }
 
-// Where the squares overflow (coordinates near +-1.7e308), again in halves with hypot (which
-// scales; too slow for every step of a long cycle or route).
-double distance(const Point3& p, const Point3& q) {
-    const double d = std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]));
-    return std::isfinite(d) ? d : 2 * std::hypot(p[0] * 0.5 - q[0] * 0.5, p[1] * 0.5 - q[1] * 0.5, p[2] * 0.5 - q[2] * 0.5);
-}
-
 /// Midpoint of the edge shared by faces f and g; false if they share fewer than two vertices.
 template <class Faces>
 bool shared_midpoint(const Faces& a, uint32_t f, uint32_t g, Point3& out) {
@@ -181,7 +174,7 @@ double length_of(const Faces& faces, const std::vector<uint32_t>& cycle) {
     if (cycle.size() < 2) return 0.0;
     const std::vector<Point3> pts = polyline_of(faces, cycle);
     double len = 0.0;
-    for (size_t i = 0; i < pts.size(); ++i) len += distance(pts[i], pts[(i + 1) % pts.size()]);
+    for (size_t i = 0; i < pts.size(); ++i) len += vec3::distance(pts[i], pts[(i + 1) % pts.size()]);
     return len;
 }
 

@@ -28,13 +28,6 @@ bool shared_midpoint(const StripArrays& a, uint32_t f, uint32_t g, Point3& mid) 
     return true;
 }
 
-// Where the squares overflow (coordinates near +-1.7e308), again in halves with hypot (which
-// scales; too slow for every step of a long cycle or route).
-double distance(const Point3& p, const Point3& q) {
-    const double d = std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]));
-    return std::isfinite(d) ? d : 2 * std::hypot(p[0] * 0.5 - q[0] * 0.5, p[1] * 0.5 - q[1] * 0.5, p[2] * 0.5 - q[2] * 0.5);
-}
-
 /// Every vertex of a face has the same z, up to 1e-9 of the mesh's extent (rounding in the
 /// file's decimals must not turn a floor plan into a 3D surface).
 bool faces_planar_in_z(const StripArrays& a) {
@@ -57,7 +50,7 @@ Route strip_route(const StripArrays& a) {
     r.points.reserve(n ? 2 * n - 1 : 0);
     bool jump = false;  // the next centroid starts a new strip: the move to it is off the surface
     auto add = [&](const Point3& p, uint32_t f, bool is_centroid) {
-        if (!r.points.empty() && !jump) r.length += distance(r.points.back().position, p);
+        if (!r.points.empty() && !jump) r.length += vec3::distance(r.points.back().position, p);
         r.points.push_back({p, f, a.parent[f], is_centroid, r.length, jump});
         jump = false;
     };
