@@ -1,6 +1,7 @@
 // singlestrip — the matching engine's builder, shared by its source files (private header):
 //   strip_matching.cpp  pins, ear and bridge splits, the patterned matching, run() and the fallback;
 //   matching_repair.cpp faces left short: augmenting paths, Edmonds in balls, splits beside them;
+//   matching_forest.cpp augmenting paths from all short faces at once (a breadth-first forest);
 //   matching_chains.cpp short faces at the junctions of forced chains: the chains split;
 //   matching_joins.cpp  loops and paths labelled, alternating-cycle flips, the joins, one pin;
 //   matching_absorb.cpp loops taken into one growing path by end rotations.
@@ -155,6 +156,11 @@ private:
     bool augment_fewest_swaps(FaceId u, IdVector<FaceId, uint32_t>& stamp, uint32_t mark, size_t budget);
     /// Swaps settled by one step of augment_fewest_swaps(): x takes h as its matched edge.
     [[nodiscard]] int step_swaps(FaceId x, HalfedgeId h, bool x_is_root, bool y_is_end) const;
+    // All short faces' augmenting paths at once (matching_forest.cpp).
+    void augment_forest(std::vector<FaceId>& short_faces, IdVector<FaceId, uint32_t>& stamp, uint32_t& mark);
+    uint32_t forest_pass(const std::vector<FaceId>& roots, IdVector<FaceId, uint32_t>& stamp, uint32_t base, size_t& work);
+    void flip_to_root(FaceId z);
+    static constexpr size_t kForestWork = 8;  ///< forest passes: faces expanded per mesh face at most
     // Augmenting path from one short face through blossoms (matching_blossom.cpp).
     /// Exhausted: the budget ran out (no path among the faces reached); Unknown: the search met
     /// faces its graph does not model (pinned faces wanting two matched edges).

@@ -317,6 +317,10 @@ void MatchingBuilder::repair_short(std::vector<FaceId>& short_faces) {
     });
     std::erase_if(short_faces, [&](FaceId f) { return quota_[f] == 0; });
     release_blossom_arrays();
+    if (exhausted.size() >= 2) {
+        plain_arrays(true);
+        augment_forest(exhausted, stamp, mark);
+    }
     // Edmonds on balls: each face's own, then one search over the union of larger balls (it
     // costs O(ball) per augmenting path).
     // Larger balls only for few faces: many faces still short are structural (no 2-factor).

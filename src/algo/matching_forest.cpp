@@ -1,0 +1,86 @@
+// singlestrip — matching engine: augmenting paths from all short faces at once (step 6).
+//
+// One breadth-first forest grows from every short face in lockstep; where an outer face of one
+// tree meets an outer face (or the root) of another across an unmatched edge, the two root paths
+// and that edge form an augmenting path, and both trees stop for the rest of the pass. A pass
+// costs O(F) at most however many faces are short, where one search per face (Edmonds from a
+// single root) costs about the area between short faces each: the last faces of a large mesh are
+// far apart (bunny00: 44 faces, 240 us each). Blossoms are not followed: what a pass leaves goes
+// on to the exact single-root searches (docs/algorithm.md, step 6).
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "matching_builder.hpp"
+
+namespace singlestrip::matching {
+
+// Flips the tree path from outer face z back to its root: each step's edge into the inner face
+// becomes matched, the inner face's edge to z unmatched.
+void MatchingBuilder::flip_to_root(FaceId z) {
+    for (; aug_prev_[z] != kNone; z = aug_prev_[z]) {
+        set_pair(matched_, aug_matched_[z], 0);
+        set_pair(matched_, aug_unmatched_[z], 1);
+    }
+}
+
+// One pass of the forest over the faces in `roots` (each with quota > 0); stamp values from
+// base on are this pass's (2t: outer face of tree t, 2t + 1: inner). Returns the paths flipped.
+uint32_t MatchingBuilder::forest_pass(const std::vector<FaceId>& roots, IdVector<FaceId, uint32_t>& stamp, uint32_t base, size_t& work) {
+    std::vector<FaceId>& queue = aug_queue_;
+    queue.clear();
+    std::vector<uint8_t> dead(roots.size(), 0);
+    auto tree = [&](FaceId f) { return stamp[f] >= base ? (stamp[f] - base) / 2 : UINT32_MAX; };
+    for (uint32_t t = 0; t < roots.size(); ++t) {
+        stamp[roots[t]] = base + 2 * t;
+        aug_prev_[roots[t]] = kNone;
+        queue.push_back(roots[t]);
+    }
+    uint32_t found = 0;
+    for (size_t head = 0; head < queue.size(); ++head) {
+        const FaceId x = queue[head];
+        const uint32_t t = tree(x);
+        if (dead[t]) continue;
+        ++work;
+        for (HalfedgeId h : sides(x)) {
+            if (!passable(h) || matched_[h]) continue;
+            const FaceId y = across(h);
+            const uint32_t ty = tree(y);
+            if (ty != UINT32_MAX) {
+                if (ty == t || dead[ty] || (stamp[y] - base) % 2 != 0) continue;
+                set_pair(matched_, h, 1);  // outer meets outer: root(t) ~ x - y ~ root(ty)
+                flip_to_root(x), flip_to_root(y);
+                --quota_[roots[t]], --quota_[roots[ty]];
+                dead[t] = dead[ty] = 1;
+                ++found;
+                break;
+            }
+            stamp[y] = base + 2 * t + 1;
+            for (HalfedgeId e : sides(y)) {
+                if (!matched_[e]) continue;
+                const FaceId z = across(e);
+                if (tree(z) != UINT32_MAX) continue;
+                stamp[z] = base + 2 * t;
+                aug_prev_[z] = x;
+                aug_unmatched_[z] = h;
+                aug_matched_[z] = e;
+                queue.push_back(z);
+            }
+        }
+    }
+    return found;
+}
+
+// Forest passes while they flip paths and their work stays within kForestWork faces per face.
+void MatchingBuilder::augment_forest(std::vector<FaceId>& short_faces, IdVector<FaceId, uint32_t>& stamp, uint32_t& mark) {
+    size_t work = 0;
+    while (short_faces.size() >= 2 && work < kForestWork * size_t{mesh_.num_faces()}) {
+        const uint32_t base = mark + 1;
+        mark += 2 * static_cast<uint32_t>(short_faces.size());
+        const uint32_t found = forest_pass(short_faces, stamp, base, work);
+        std::erase_if(short_faces, [&](FaceId f) { return quota_[f] == 0; });
+        if (found == 0) break;
+    }
+}
+
+}  // namespace singlestrip::matching
