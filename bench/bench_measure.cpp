@@ -1,10 +1,8 @@
 // singlestrip_bench — the measurements, each run in a forked child: one engine's repetitions
 // (read -> prepare -> build -> encode -> write, peak memory, verified), the meshoptimizer
 // reference and swap floor, and random constraint polylines on both engines.
-// <out>/awkward.dat (gnuplot). Progress goes to stderr only when it is a terminal.
 #include <fcntl.h>
 #include <malloc.h>
-
 #include <poll.h>
 #include <signal.h>
 #include <sys/resource.h>
@@ -308,8 +306,8 @@ uint64_t tool_peak_kb(const std::string& path, const ss::StripOptions& strip, bo
 namespace {
 
 /// One pass as the CLI makes it, each stage timed: read -> prepare_soup_components(orient) ->
-/// Mesh::from_soup -> build_strip -> strip_arrays + encode_triangle_strip. status 1: the input
-/// was rejected (skipped, not failed); 2: our error. Other exceptions propagate.
+/// Mesh::from_soup (with the checks' edge pairing, one component) -> build_strip -> strip_arrays + encode_triangle_strip. status 1: the
+/// input was rejected (skipped, not failed); 2: our error. Other exceptions propagate.
 struct Pass {
     int status = 0;
     std::string message;
@@ -334,12 +332,13 @@ Pass strip_once(const Spec& spec, const ss::StripOptions& options, bool cycles =
     p.read = seconds_since(t);
     t = Clock::now();
     // As stripify() does: a large shuffled soup is checked and stripped in a Z-order.
-    std::vector<uint32_t> origin, vertex_origin;
+    std::vector<uint32_t> origin, vertex_origin, twin;
     try {
         ss::PreparedSoup prepared = ss::prepare_soup_components(std::move(soup), ss::PrepareOptions{true, true, true}, spec.path);
         soup = std::move(prepared.soup);
         origin = std::move(prepared.face_origin);
         vertex_origin = std::move(prepared.vertex_origin);
+        twin = std::move(prepared.twin);
     } catch (const ss::InputError& e) {
         p.status = 1;
         p.message = e.what();
@@ -349,7 +348,7 @@ Pass strip_once(const Spec& spec, const ss::StripOptions& options, bool cycles =
     p.in_vertices = soup.points.size();
     p.in_tris = soup.triangles.size();
     t = Clock::now();
-    ss::Mesh mesh = ss::Mesh::from_soup(soup);
+    ss::Mesh mesh = twin.empty() ? ss::Mesh::from_soup(soup) : ss::Mesh::from_soup(soup, std::move(twin));
     p.adj = seconds_since(t);
     if (const uint32_t parts = mesh.num_components(); parts > 1) {  // timed here as one strip
         p.status = 1;

@@ -9,6 +9,7 @@
 #include "fixtures.hpp"
 #include "singlestrip/errors.hpp"
 #include "singlestrip/mesh.hpp"
+#include "singlestrip/validate.hpp"
 
 using namespace singlestrip;
 
@@ -209,4 +210,49 @@ TEST(Mesh, LargeMeshReportsTheFirstDefectAsOnePassWould) {
     const Mesh m = Mesh::from_soup(torus);
     m.validate();
     EXPECT_EQ(m.num_boundary_edges(), 0u);
+}
+
+// The checks' edge pairing (PreparedSoup::twin) builds the same corner table as a second sort,
+// also after --orient flipped faces; the pipeline builds its mesh from it.
+TEST(Mesh, PairingFromTheChecksIsTheSortedOne) {
+    std::vector<TriangleSoup> soups = {make_icosphere(3), make_genus_with_holes(2, 3, 3), make_disk_with_holes(4, 2),
+                                       make_cone(300, false)};
+    TriangleSoup flipped = make_torus(16, 9);
+    std::mt19937 rng(5);
+    for (Triangle& t : flipped.triangles)  // a consistent orientation, scrambled: --orient undoes it
+        if (rng() % 3 == 0) std::swap(t[1], t[2]);
+    soups.push_back(std::move(flipped));
+    for (size_t i = 0; i < soups.size(); ++i) {
+        SCOPED_TRACE(i);
+        PreparedSoup p = prepare_soup_components(soups[i], PrepareOptions{true}, "t");
+        ASSERT_EQ(p.twin.size(), 3 * p.soup.triangles.size());
+        const Mesh sorted = Mesh::from_soup(p.soup);
+        const Mesh paired = Mesh::from_soup(p.soup, std::move(p.twin));
+        paired.validate();
+        for (HalfedgeId h : IdRange<HalfedgeId>(sorted.num_halfedges())) ASSERT_EQ(paired.twin(h), sorted.twin(h));
+        EXPECT_EQ(paired.genus(), sorted.genus());
+    }
+}
+
+TEST(Mesh, PairingFromTheChecksIsCheckedAndOnlyForOneComponent) {
+    TriangleSoup two = make_icosphere(1);
+    const TriangleSoup other = make_icosphere(1);
+    const auto nv = static_cast<uint32_t>(two.points.size());
+    two.points.insert(two.points.end(), other.points.begin(), other.points.end());
+    for (Triangle t : other.triangles) two.triangles.push_back({t[0] + nv, t[1] + nv, t[2] + nv});
+    EXPECT_TRUE(prepare_soup_components(two, PrepareOptions{}, "t").twin.empty());
+
+    const TriangleSoup s = make_grid_disk(4, 3);
+    const std::vector<uint32_t> good = prepare_soup_components(s, PrepareOptions{}, "t").twin;
+    auto bad = [&](auto&& change) {
+        std::vector<uint32_t> t = good;
+        change(t);
+        return t;
+    };
+    const uint32_t h = static_cast<uint32_t>(std::find_if(good.begin(), good.end(), [](uint32_t t) { return t != kNone; }) - good.begin());
+    EXPECT_THROW(Mesh::from_soup(s, bad([](auto& t) { t.pop_back(); })), InputError);
+    EXPECT_THROW(Mesh::from_soup(s, bad([&](auto& t) { t[good[h]] = kNone; })), InputError);  // one-sided
+    EXPECT_THROW(Mesh::from_soup(s, bad([&](auto& t) { t[h] = h; })), InputError);            // itself
+    EXPECT_THROW(Mesh::from_soup(s, bad([&](auto& t) { std::swap(t[h], t[h - h % 3 + (h + 1) % 3]); })), InputError);
+    EXPECT_NO_THROW(Mesh::from_soup(s, bad([](auto&) {})).validate());
 }

@@ -120,6 +120,18 @@ public:
     /// The same, taking the soup's points instead of copying them; `soup` is left empty (its
     /// memory freed), for callers that no longer need it.
     static Mesh from_soup(TriangleSoup&& soup);
+    /// The same with the edge pairing already known (PreparedSoup::twin from
+    /// prepare_soup_components(): the analysis that checked the soup paired its half-edges), so
+    /// the half-edges are not sorted again. twin[3f+k] is the partner of the half-edge from
+    /// triangles[f][k] to triangles[f][(k+1)%3], kNone on the boundary; it is moved into the mesh.
+    /// \pre twin holds every interior edge of the soup (a missing pair would be read as boundary).
+    /// 	hrow InputError as above, and if twin has the wrong size or pairs two half-edges that do
+    ///        not run opposite ways along one edge (checked: O(F)).
+    static Mesh from_soup(TriangleSoup&& soup, std::vector<uint32_t>&& twin);
+    static Mesh from_soup(const TriangleSoup& soup, std::vector<uint32_t>&& twin);
+    /// Half-edges the corner table reserves for a mesh of nf faces (room for the engines' splits
+    /// without a reallocation); a caller that fills a twin array for from_soup() reserves as many.
+    [[nodiscard]] static size_t reserved_halfedges(size_t nf) noexcept { return 3 * nf + 6 * reserved_spare(nf); }
 
     // --- sizes ---
     [[nodiscard]] uint32_t num_vertices() const noexcept { return static_cast<uint32_t>(points_.size()); }
@@ -205,7 +217,11 @@ public:
 
 private:
     // Steps of from_soup().
-    static Mesh build(const std::vector<Triangle>& triangles, std::vector<Point3> points, std::vector<Triangle>* release = nullptr);
+    static Mesh build(const std::vector<Triangle>& triangles, std::vector<Point3> points, std::vector<Triangle>* release = nullptr,
+                      std::vector<uint32_t>* paired = nullptr);
+    /// Splits reserved for up front (reserve_splits(): F/16 at most).
+    [[nodiscard]] static size_t reserved_spare(size_t nf) noexcept { return nf / 16 + 64; }
+    void adopt_twins(std::vector<uint32_t>&& twin, const std::vector<Triangle>& triangles);
     void reserve_for_split();
     void pair_halfedges(const SoupEdges& edges);
     void pair_halfedge_range(const SoupEdges& edges, uint32_t v_begin, uint32_t v_end);

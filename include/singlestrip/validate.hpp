@@ -66,6 +66,10 @@ struct PreparedSoup {
     /// no locality along the faces): the given soup's vertex of each vertex of `soup`. Empty:
     /// numbered as given.
     std::vector<uint32_t> vertex_origin;
+    /// The analysis' edge pairing of `soup` (after any flips): per half-edge 3f+k its partner,
+    /// kNone on the boundary, for Mesh::from_soup(soup, twin) (no second sort of the half-edges).
+    /// Empty when there is more than one component (each is built on its own).
+    std::vector<uint32_t> twin;
 };
 
 /// prepare_soup() that also gives the components from the same analysis, so a caller that

@@ -125,6 +125,7 @@ struct Analysis {
         // The grouping first: its sort needs 28 bytes a face for a moment, before the arrays
         // below exist; it is freed (14 bytes a face) before the per-face counts (the peak).
         std::optional<SoupEdges> grouped(std::in_place, soup.triangles, nv, &usable);
+        twin.reserve(Mesh::reserved_halfedges(nf));  // handed on to the mesh (PreparedSoup::twin)
         twin.assign(3 * nf, kNone);
         UnionFind faces(nf);
         corners_ = std::make_unique<UnionFind>(3 * nf);
@@ -354,6 +355,17 @@ long long apply_flips(TriangleSoup& soup, const std::vector<int8_t>& flip) {
     return flipped;
 }
 
+/// The pairing after the faces with flip[f] == 1 were reversed ((a,b,c) -> (a,c,b) turns the
+/// half-edges 0, 1, 2 of the face into 2, 1, 0). In place, O(F).
+std::vector<uint32_t> flipped_twins(std::vector<uint32_t> twin, const std::vector<int8_t>* flip) {
+    if (!flip) return twin;
+    auto moved = [&](uint32_t h) { return h != kNone && (*flip)[h / 3] == 1 ? h - h % 3 + 2 - h % 3 : h; };
+    for (uint32_t& t : twin) t = moved(t);
+    for (std::size_t f = 0; f < flip->size(); ++f)
+        if ((*flip)[f] == 1) std::swap(twin[3 * f], twin[3 * f + 2]);
+    return twin;
+}
+
 /// Components numbered 0.. in the order of their lowest face (of the given order when the
 /// soup was reordered); unusable faces get kNone.
 std::vector<uint32_t> number_components(const Analysis& a, uint32_t* count) {
@@ -434,6 +446,7 @@ PreparedSoup prepare_soup_components(TriangleSoup soup, const PrepareOptions& op
     }
     if (orient) apply_flips(soup, a.flip);
     out.component = number_components(a, &out.num_components);
+    if (out.num_components == 1) out.twin = flipped_twins(std::move(a.twin), orient ? &a.flip : nullptr);
     out.soup = std::move(soup);
     return out;
 }

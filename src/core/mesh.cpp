@@ -27,10 +27,22 @@ Mesh Mesh::from_soup(TriangleSoup&& soup) {
     return m;
 }
 
+Mesh Mesh::from_soup(const TriangleSoup& soup, std::vector<uint32_t>&& twin) {
+    return build(soup.triangles, soup.points, nullptr, &twin);
+}
+
+Mesh Mesh::from_soup(TriangleSoup&& soup, std::vector<uint32_t>&& twin) {
+    soup.source_polygon = std::vector<uint32_t>();
+    Mesh m = build(soup.triangles, std::move(soup.points), &soup.triangles, &twin);
+    soup.points = std::vector<Point3>();
+    return m;
+}
+
 // The pairing's scratch (SoupEdges, 28 bytes a face while sorting) comes before the corner
 // table's arrays, and `release` (the soup's triangles) goes once the corners are filled: that
 // keeps the peak of a large mesh at about its corner table plus the soup.
-Mesh Mesh::build(const std::vector<Triangle>& triangles, std::vector<Point3> points, std::vector<Triangle>* release) {
+Mesh Mesh::build(const std::vector<Triangle>& triangles, std::vector<Point3> points, std::vector<Triangle>* release,
+                 std::vector<uint32_t>* paired) {
     Mesh m;
     const size_t nf = triangles.size();
     if (nf >= kNone / 3) throw InputError("mesh has too many faces (" + std::to_string(nf) + ")");
@@ -48,10 +60,14 @@ Mesh Mesh::build(const std::vector<Triangle>& triangles, std::vector<Point3> poi
     // Capacity for the splits the engines add (reserve_splits(): F/16 at most up front), taken
     // before the arrays are filled: reserving later copies them all (2M faces: 50 ms), and pages
     // no split touches cost address space, not memory.
-    const size_t spare = nf / 16 + 64;
-    m.twin_.reserve(3 * nf + 6 * spare);
-    m.twin_.assign(3 * nf, kNone);
-    m.pair_halfedges(SoupEdges(triangles, m.points_.size()));
+    const size_t spare = reserved_spare(nf);
+    if (paired) {
+        m.adopt_twins(std::move(*paired), triangles);
+    } else {
+        m.twin_.reserve(reserved_halfedges(nf));
+        m.twin_.assign(3 * nf, kNone);
+        m.pair_halfedges(SoupEdges(triangles, m.points_.size()));
+    }
     m.corner_vertex_.reserve(3 * nf + 6 * spare);
     m.corner_vertex_.resize(3 * nf);
     for (size_t f = 0; f < nf; ++f)
@@ -64,6 +80,22 @@ Mesh Mesh::build(const std::vector<Triangle>& triangles, std::vector<Point3> poi
     m.assign_vertex_halfedges();
     m.check_vertex_fans();
     return m;
+}
+
+// A pairing found by the caller's analysis, checked to be one: each pair is mutual and runs
+// opposite ways along one edge (sequential reads but for the partner's two ends).
+void Mesh::adopt_twins(std::vector<uint32_t>&& twin, const std::vector<Triangle>& triangles) {
+    const size_t nh = 3 * triangles.size();
+    if (twin.size() != nh) throw InputError("edge pairing of " + std::to_string(twin.size()) + " half-edges for " + std::to_string(nh));
+    auto end = [&](uint32_t h, uint32_t k) { return triangles[h / 3][(h % 3 + k) % 3]; };
+    for (uint32_t h = 0; h < nh; ++h) {
+        const uint32_t t = twin[h];
+        if (t == kNone) continue;
+        if (t >= nh || t == h || twin[t] != h || end(h, 0) != end(t, 1) || end(h, 1) != end(t, 0))
+            throw InputError("edge pairing: half-edge " + std::to_string(h) + " is not paired with an opposite half-edge");
+    }
+    twin_ = std::move(twin);
+    twin_.reserve(reserved_halfedges(triangles.size()));
 }
 
 void Mesh::pair_halfedges(const SoupEdges& edges) {

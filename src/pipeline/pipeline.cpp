@@ -58,10 +58,14 @@ void check_constraint_edges(const TriangleSoup& soup, const std::vector<Constrai
 }
 
 // prepare_soup() promises a soup Mesh::from_soup() accepts: a refusal here is a bug.
-Mesh build_mesh(TriangleSoup& soup, bool self_check, bool take_soup) {
+// `twin`: the checks' edge pairing of the soup (PreparedSoup::twin), or empty.
+Mesh build_mesh(TriangleSoup& soup, std::vector<uint32_t>&& twin, bool self_check, bool take_soup) {
     Mesh mesh;
     try {
-        mesh = take_soup ? Mesh::from_soup(std::move(soup)) : Mesh::from_soup(soup);
+        if (twin.empty())
+            mesh = take_soup ? Mesh::from_soup(std::move(soup)) : Mesh::from_soup(soup);
+        else
+            mesh = take_soup ? Mesh::from_soup(std::move(soup), std::move(twin)) : Mesh::from_soup(soup, std::move(twin));
     } catch (const InputError& e) {
         throw InternalError(std::string("prepare_soup accepted a soup that Mesh::from_soup rejects: ") + e.what());
     }
@@ -184,11 +188,11 @@ void compute_cycles(PipelineResult& r, PipelineStage* stage) {
 }
 
 /// Today's path: one component, one strip.
-void strip_one(PipelineResult& r, bool self_check, PipelineStage* stage) {
+void strip_one(PipelineResult& r, std::vector<uint32_t>&& twin, bool self_check, PipelineStage* stage) {
     // Attributes are blended from r.input after the strip: then it has to stay.
     const bool lean = r.options.release_intermediates && r.input.attributes.empty();
     enter(stage, PipelineStage::Mesh);
-    Mesh mesh = build_mesh(r.input, self_check, lean);
+    Mesh mesh = build_mesh(r.input, std::move(twin), self_check, lean);
     enter(stage, PipelineStage::Strip);
     r.strip = build_strip_connected(std::move(mesh), r.options.strip);  // the checks counted one component
     if (self_check) r.strip.mesh.validate();
@@ -253,8 +257,9 @@ PipelineResult stripify(TriangleSoup soup, const PipelineOptions& options, Pipel
     r.seconds.build = clock.lap();
     if (count <= 1) {
         comp = std::vector<uint32_t>();  // not needed for one component: free it before the strip
-        strip_one(r, options.self_check, stage);
+        strip_one(r, std::move(prepared.twin), options.self_check, stage);
     } else {
+        prepared.twin = std::vector<uint32_t>();
         detail::strip_components(r, comp, count, stage);
     }
     if (!origin.empty()) {
