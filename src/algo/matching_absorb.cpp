@@ -213,21 +213,22 @@ void PathGrower::rotate(uint32_t side, HalfedgeId h) {
     ends_[side] = y;
 }
 
-// Rotations made before the order was built are undone on the crossed edges only; the order,
-// built after them, is then stale and is built again when next needed.
+// A rotation keeps its pivot x where it was and reverses the part beyond it, so undoing one
+// made before the order was built reverses that part again, found from x's position (the
+// order, built after it, holds the rotated path; the later rotations are undone first).
 void PathGrower::undo_trial() {
-    bool stale = false;
     for (size_t i = trial_.size(); i-- > 0;) {
         const Rotation& r = trial_[i];
-        if (r.from == kNoOrder)
-            stale = true;
-        else
+        if (r.from != kNoOrder) {
             reverse(r.side, r.from);
+        } else if (path_) {
+            const uint32_t px = path_->position(b_.across(r.link));
+            reverse(r.side, r.side ? px + 1 : px);
+        }
         b_.set_pair(b_.used_, r.link, 0);
         b_.set_pair(b_.used_, r.dropped, 1);
         ends_[r.side] = Mesh::face(r.link);
     }
-    if (stale) path_.reset();
     trial_.clear();
     trial_cost_ = 0;
 }
