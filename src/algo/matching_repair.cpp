@@ -5,6 +5,7 @@
 #include <boost/graph/max_cardinality_matching.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -197,18 +198,43 @@ int MatchingBuilder::step_swaps(FaceId x, HalfedgeId h, bool x_is_root, bool y_i
     const FaceId y = Mesh::face(t);
     const HalfedgeId yp_in = x_is_root ? kNone : mesh_.twin(aug_unmatched_[x]);  // x's previous partner's matched edge
     const FaceId yp = x_is_root ? FaceId(kNone) : Mesh::face(yp_in);
-    auto old_crossed = [&](HalfedgeId a) { return passable(a) && !matched_[a]; };
-    auto new_crossed = [&](HalfedgeId a) {
-        const FaceId f = Mesh::face(a);
-        const HalfedgeId m = f == x ? h : f == y ? t : f == yp ? yp_in : HalfedgeId(kNone);
-        return m == kNone ? old_crossed(a) : passable(a) && a != m;
+    // Each face's crossed edges as three bits, before and after the flip, read once per face
+    // (swap_test() through a predicate read about eight edges' flags per edge).
+    auto old_mask = [&](FaceId f) {
+        uint32_t m = 0;
+        for (uint32_t k = 0; k < 3; ++k) {
+            const HalfedgeId a = Mesh::halfedge(f, k);
+            m |= static_cast<uint32_t>(passable(a) && !matched_[a]) << k;
+        }
+        return m;
     };
-    auto sw = [&](HalfedgeId a, const auto& crossed) { return crossed(a) ? swap_test(a, crossed) : 0; };
-    int d = -sw(h, old_crossed);
-    for (HalfedgeId a : sides(x))
-        if (a != h && passable(a)) d += sw(a, new_crossed) - sw(a, old_crossed);
-    for (HalfedgeId a : sides(y))
-        if (a != t && passable(a) && (y_is_end || !matched_[a])) d += sw(a, new_crossed) - sw(a, old_crossed);
+    auto new_mask = [&](FaceId f, uint32_t old) {
+        const HalfedgeId m = f == x ? h : f == y ? t : f == yp ? yp_in : HalfedgeId(kNone);
+        if (m == kNone) return old;
+        uint32_t p = 0;
+        for (uint32_t k = 0; k < 3; ++k) p |= static_cast<uint32_t>(passable(Mesh::halfedge(f, k))) << k;
+        return p & ~(1u << Mesh::index_in_face(m));
+    };
+    static constexpr std::array<uint8_t, 8> kOnes = {0, 1, 1, 2, 1, 2, 2, 3};
+    // swap_test() of crossed edge a between faces with masks ma (a's face) and mb (its twin's).
+    auto sw = [&](HalfedgeId a, uint32_t ma, uint32_t mb) {
+        const uint32_t ia = Mesh::index_in_face(a), ib = Mesh::index_in_face(mesh_.twin(a));
+        if (!((ma >> ia) & 1)) return 0;
+        if (kOnes[ma] + vlink_[Mesh::face(a)] != 2 || kOnes[mb] + vlink_[across(a)] != 2) return 0;
+        return static_cast<int>(((ma >> ((ia + 2) % 3)) & 1) == ((mb >> ((ib + 1) % 3)) & 1));
+    };
+    const uint32_t ox = old_mask(x), oy = old_mask(y), nx = new_mask(x, ox), ny = new_mask(y, oy);
+    int d = -sw(h, ox, oy);
+    auto around = [&](FaceId f, HalfedgeId skip, uint32_t of, uint32_t nf, bool all) {
+        for (HalfedgeId a : sides(f)) {
+            if (a == skip || !passable(a) || !(all || !matched_[a])) continue;
+            const FaceId g = across(a);
+            const uint32_t og = old_mask(g);
+            d += sw(a, nf, new_mask(g, og)) - sw(a, of, og);
+        }
+    };
+    around(x, h, ox, nx, true);
+    around(y, t, oy, ny, y_is_end);
     return d;
 }
 
