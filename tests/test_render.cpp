@@ -55,6 +55,7 @@ TEST(Render, NotBuilt) {
 namespace {
 
 constexpr int kW = 320, kH = 256;
+constexpr size_t kSliverPixels = 2;  ///< see check_coverage()
 
 struct Case {
     std::string name;
@@ -118,7 +119,14 @@ void check_coverage(const std::vector<Case>& cases) {
             SCOPED_TRACE("view " + std::to_string(v));
             const auto in = render::render_coverage(soup.points, tris, render::Primitive::Triangles, soup.points, kViews[v], kW, kH);
             const auto out = render::render_coverage(a.points, strip, render::Primitive::TriangleStrip, soup.points, kViews[v], kW, kH);
-            EXPECT_EQ(differing(in, out), 0u) << "pixels whose front-layer count differs";
+            const auto split =
+                render::render_coverage(a.points, flatten(a.faces), render::Primitive::Triangles, soup.points, kViews[v], kW, kH);
+            // The strip draws exactly its own triangles, each with the same winding.
+            EXPECT_EQ(differing(split, out), 0u) << "pixels whose front-layer count differs between the strip and its triangles";
+            // A split's midpoint, projected and snapped, is off its projected edge by a fraction
+            // of a pixel: where that edge is a silhouette (one side culled), a pixel centre in the
+            // sliver between the two can flip (builtin, view 2: 1 pixel).
+            EXPECT_LE(differing(in, split), kSliverPixels) << "pixels whose front-layer count differs between input and split mesh";
 
             // Negative checks. Shifting the parity by one leading repeated index flips every
             // triangle's winding: front and back swap.
@@ -128,13 +136,13 @@ void check_coverage(const std::vector<Case>& cases) {
             // The model is in the picture (an open surface may show only its back from here).
             ASSERT_GT(covered(in) + covered(fl), static_cast<size_t>(kW * kH / 50));
             if (c.open) {
-                EXPECT_GT(differing(in, fl), 0u) << "a flipped strip must not look like the input";
+                EXPECT_GT(differing(in, fl), kSliverPixels) << "a flipped strip must not look like the input";
             }
             // Flipping the second half only (one repeated index in the middle).
             std::vector<uint32_t> half = strip;
             half.insert(half.begin() + static_cast<std::ptrdiff_t>(half.size() / 2), half[half.size() / 2]);
             const auto hf = render::render_coverage(a.points, half, render::Primitive::TriangleStrip, soup.points, kViews[v], kW, kH);
-            EXPECT_GT(differing(in, hf), 0u) << "a strip flipped half-way must not look like the input";
+            EXPECT_GT(differing(in, hf), kSliverPixels) << "a strip flipped half-way must not look like the input";
         }
     }
 }

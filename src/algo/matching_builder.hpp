@@ -71,6 +71,7 @@ private:
         bool operator<(const AugEntry& o) const { return swaps > o.swaps; }  ///< fewest swaps on top
     };
     std::vector<AugEntry> aug_heap_;
+    std::vector<AugEntry> aug_ends_;  ///< forest_pass_fewest(): queued path ends, cheapest on top
 
     [[nodiscard]] FaceId across(HalfedgeId h) const { return mesh_.neighbor(h); }
     [[nodiscard]] bool passable(HalfedgeId h) const { return !mesh_.is_boundary(h) && !blocked_[h]; }
@@ -159,6 +160,11 @@ private:
     // All short faces' augmenting paths at once (matching_forest.cpp).
     void augment_forest(std::vector<FaceId>& short_faces, IdVector<FaceId, uint32_t>& stamp, uint32_t& mark);
     uint32_t forest_pass(const std::vector<FaceId>& roots, IdVector<FaceId, uint32_t>& stamp, uint32_t base, size_t& work);
+    void augment_forest_fewest(std::vector<FaceId>& short_faces, IdVector<FaceId, uint32_t>& stamp, uint32_t& mark);
+    uint32_t forest_pass_fewest(const std::vector<FaceId>& roots, IdVector<FaceId, uint32_t>& stamp, uint32_t base, size_t& work);
+    IdVector<FaceId, int32_t> aug_swaps_;  ///< forest_pass_fewest(): swaps of the tree path to each outer face
+    /// forest_pass_fewest(): faces expanded after an end is found before the cheapest ends are taken.
+    static constexpr size_t kEndWait = 256;
     void flip_to_root(FaceId z);
     static constexpr size_t kForestWork = 8;  ///< forest passes: faces expanded per mesh face at most
     // Augmenting path from one short face through blossoms (matching_blossom.cpp).

@@ -7,6 +7,11 @@
 // single root) costs about the area between short faces each: the last faces of a large mesh are
 // far apart (bunny00: 44 faces, 240 us each). Blossoms are not followed: what a pass leaves goes
 // on to the exact single-root searches (docs/algorithm.md, step 6).
+//
+// The fewest-swap forest (forest_pass_fewest()) grows the same trees best first by the swaps
+// their paths settle, as augment_fewest_swaps() does for one root: where single-root searches
+// give up, it settles the rest along the pattern instead of across it.
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -81,6 +86,101 @@ void MatchingBuilder::augment_forest(std::vector<FaceId>& short_faces, IdVector<
         std::erase_if(short_faces, [&](FaceId f) { return quota_[f] == 0; });
         if (found == 0) break;
     }
+}
+
+// forest_pass() best first by swaps (step_swaps(); a step may remove some, so the order is no
+// exact shortest path): an outer face x meeting outer face y of another tree across h is queued
+// as an end costing the two tree paths plus the step, and flipped when it is the cheapest entry.
+// Swap-removing chains make costs negative, and the search would wander along them: once an end
+// is queued, kEndWait more expansions at most, then every queued end is taken cheapest first. A
+// pass stops once a quarter of its trees are matched: the rest grew among the matched trees'
+// faces, and a new pass gives them those faces back (docs/algorithm.md, step 6).
+uint32_t MatchingBuilder::forest_pass_fewest(const std::vector<FaceId>& roots, IdVector<FaceId, uint32_t>& stamp, uint32_t base,
+                                             size_t& work) {
+    std::vector<AugEntry>&heap = aug_heap_, &ends = aug_ends_;
+    heap.clear(), ends.clear();
+    std::vector<uint8_t> dead(roots.size(), 0);
+    auto tree = [&](FaceId f) { return stamp[f] >= base ? (stamp[f] - base) / 2 : UINT32_MAX; };
+    auto push = [](std::vector<AugEntry>& q, AugEntry e) {
+        q.push_back(e);
+        std::push_heap(q.begin(), q.end());
+    };
+    auto pop = [](std::vector<AugEntry>& q) {
+        std::pop_heap(q.begin(), q.end());
+        const AugEntry e = q.back();
+        q.pop_back();
+        return e;
+    };
+    for (uint32_t t = 0; t < roots.size(); ++t) {
+        stamp[roots[t]] = base + 2 * t;
+        aug_prev_[roots[t]] = kNone;
+        aug_swaps_[roots[t]] = 0;
+        push(heap, {0, roots[t], kNone});
+    }
+    const size_t limit = kForestWork * size_t{mesh_.num_faces()};
+    enum class Ends { None, Waiting, Taking, Late } mode = Ends::None;
+    size_t since = 0;                // work when the first end of the wait was queued
+    uint32_t found = 0, before = 0;  // paths flipped; before the ends were taken
+    while ((!heap.empty() || !ends.empty()) && work < limit && 4 * found < roots.size()) {
+        if (mode == Ends::Waiting && work - since > kEndWait) mode = Ends::Taking, before = found;
+        if (mode == Ends::Taking && ends.empty()) mode = found > before ? Ends::None : Ends::Late;  // Late: none was live
+        const bool take = !ends.empty() && (mode == Ends::Taking || heap.empty() || !(ends.front() < heap.front()));
+        const AugEntry top = pop(take ? ends : heap);
+        const FaceId x = top.x;
+        const uint32_t t = tree(x);
+        if (dead[t]) continue;
+        if (top.end != kNone) {  // root(t) ~ x - y ~ root(ty)
+            const uint32_t ty = tree(across(top.end));
+            if (dead[ty]) continue;
+            set_pair(matched_, top.end, 1);
+            flip_to_root(x), flip_to_root(across(top.end));
+            --quota_[roots[t]], --quota_[roots[ty]];
+            dead[t] = dead[ty] = 1;
+            ++found;
+            if (mode != Ends::Taking) mode = Ends::None;
+            continue;
+        }
+        ++work;
+        const bool root = aug_prev_[x] == kNone;
+        for (HalfedgeId h : sides(x)) {
+            if (!passable(h) || matched_[h]) continue;
+            const FaceId y = across(h);
+            const uint32_t ty = tree(y);
+            if (ty != UINT32_MAX) {  // an outer face of another live tree: an end
+                if (ty == t || dead[ty] || (stamp[y] - base) % 2 != 0) continue;
+                push(ends, {top.swaps + step_swaps(x, h, root, true) + aug_swaps_[y], x, h});
+                if (mode == Ends::None) mode = Ends::Waiting, since = work;
+                continue;
+            }
+            stamp[y] = base + 2 * t + 1;
+            const int swaps = top.swaps + step_swaps(x, h, root, false);
+            for (HalfedgeId e : sides(y)) {
+                if (!matched_[e]) continue;
+                const FaceId z = across(e);
+                if (tree(z) != UINT32_MAX) continue;
+                stamp[z] = base + 2 * t;
+                aug_prev_[z] = x, aug_unmatched_[z] = h, aug_matched_[z] = e;
+                aug_swaps_[z] = swaps;
+                push(heap, {swaps, z, kNone});
+            }
+        }
+    }
+    return found;
+}
+
+// Fewest-swap forest passes while they flip paths and their work stays within kForestWork faces
+// per face.
+void MatchingBuilder::augment_forest_fewest(std::vector<FaceId>& short_faces, IdVector<FaceId, uint32_t>& stamp, uint32_t& mark) {
+    size_t work = 0;
+    aug_swaps_.assign(mesh_.num_faces(), 0);
+    while (short_faces.size() >= 2 && work < kForestWork * size_t{mesh_.num_faces()}) {
+        const uint32_t base = mark + 1;
+        mark += 2 * static_cast<uint32_t>(short_faces.size());
+        const uint32_t found = forest_pass_fewest(short_faces, stamp, base, work);
+        std::erase_if(short_faces, [&](FaceId f) { return quota_[f] == 0; });
+        if (found == 0) break;
+    }
+    aug_swaps_.reset();
 }
 
 }  // namespace singlestrip::matching
