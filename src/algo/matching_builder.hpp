@@ -165,6 +165,7 @@ private:
     IdVector<FaceId, int32_t> aug_swaps_;  ///< forest_pass_fewest(): swaps of the tree path to each outer face
     /// forest_pass_fewest(): faces expanded after an end is found before the cheapest ends are taken.
     static constexpr size_t kEndWait = 256;
+    static constexpr size_t kFewestWork = 1;  ///< fewest-swap forest: faces expanded per mesh face at most
     void flip_to_root(FaceId z);
     static constexpr size_t kForestWork = 8;  ///< forest passes: faces expanded per mesh face at most
     // Augmenting path from one short face through blossoms (matching_blossom.cpp).

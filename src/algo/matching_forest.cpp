@@ -117,7 +117,7 @@ uint32_t MatchingBuilder::forest_pass_fewest(const std::vector<FaceId>& roots, I
         aug_swaps_[roots[t]] = 0;
         push(heap, {0, roots[t], kNone});
     }
-    const size_t limit = kForestWork * size_t{mesh_.num_faces()};
+    const size_t limit = kFewestWork * size_t{mesh_.num_faces()};
     enum class Ends { None, Waiting, Taking, Late } mode = Ends::None;
     size_t since = 0;                // work when the first end of the wait was queued
     uint32_t found = 0, before = 0;  // paths flipped; before the ends were taken
@@ -168,12 +168,12 @@ uint32_t MatchingBuilder::forest_pass_fewest(const std::vector<FaceId>& roots, I
     return found;
 }
 
-// Fewest-swap forest passes while they flip paths and their work stays within kForestWork faces
+// Fewest-swap forest passes while they flip paths and their work stays within kFewestWork faces
 // per face.
 void MatchingBuilder::augment_forest_fewest(std::vector<FaceId>& short_faces, IdVector<FaceId, uint32_t>& stamp, uint32_t& mark) {
     size_t work = 0;
     aug_swaps_.assign(mesh_.num_faces(), 0);
-    while (short_faces.size() >= 2 && work < kForestWork * size_t{mesh_.num_faces()}) {
+    while (short_faces.size() >= 2 && work < kFewestWork * size_t{mesh_.num_faces()}) {
         const uint32_t base = mark + 1;
         mark += 2 * static_cast<uint32_t>(short_faces.size());
         const uint32_t found = forest_pass_fewest(short_faces, stamp, base, work);
