@@ -321,11 +321,14 @@ void MatchingBuilder::repair_short(std::vector<FaceId>& short_faces) {
         settled = std::erase_if(short_faces, [&](FaceId f) { return quota_[f] == 0; });
     }
     // The faces single searches could not settle within budget, all at once (matching_forest.cpp):
-    // fewer swaps than exact searches give (libcgal-demo: GL indices -0.66%). Not when the round
-    // left more faces short than it settled: most are then structural, with no path to find (a
-    // disk with a hole every 200 faces, 1M: 3,408 left, 90 settled; the forest expanded half the
-    // mesh for none).
-    if (!plain_paths_ && short_faces.size() >= 2 && settled >= short_faces.size()) augment_forest_fewest(short_faces, stamp, mark);
+    // fewer swaps than exact searches give (libcgal-demo: GL indices -0.64%). Only for a few
+    // faces, and not when the round left more faces short than it settled: many faces left are
+    // mostly structural, with no path to find, and each pass expands much of the mesh whatever
+    // the number of trees (a disk with a hole every 200 faces, 1M: 3,408 left and 90 settled,
+    // one pass of 474K faces found nothing; after its splits 454 left, 7 passes of 100-190K faces).
+    constexpr size_t kForestMost = 64;  // libcgal-demo: at most 44 left where the forest runs
+    if (!plain_paths_ && short_faces.size() >= 2 && short_faces.size() <= kForestMost && settled >= short_faces.size())
+        augment_forest_fewest(short_faces, stamp, mark);
     plain_arrays(false);
     if (short_faces.empty()) return;
     // Edmonds from each face alone, bounded so that all of them touch O(F) faces: a face it
