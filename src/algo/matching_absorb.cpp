@@ -68,7 +68,7 @@ private:
     void start(StructId path_root);
     [[nodiscard]] Take best_take(uint32_t side);
     void take(uint32_t side, const Take& t);
-    void rotate(uint32_t side, HalfedgeId h);
+    bool rotate(uint32_t side, HalfedgeId h);  ///< false if h led to the end's own neighbour
     void reverse(uint32_t side, uint32_t from) { side ? path_->reverse_back(from) : path_->reverse_front(from); }
     PathOrder& order();
     [[nodiscard]] std::vector<FaceId> path_from(FaceId end) const;
@@ -189,10 +189,10 @@ FaceId PathGrower::towards_end(uint32_t side, FaceId x) {
 
 // h: a free edge of ends_[side] into face x of the path. Before the order is built, the face
 // that becomes the end is found by walking (rotations near the ends are the common ones).
-void PathGrower::rotate(uint32_t side, HalfedgeId h) {
+bool PathGrower::rotate(uint32_t side, HalfedgeId h) {
     const FaceId e = ends_[side], x = b_.across(h);
     for (HalfedgeId k : sides(e))
-        if (b_.used_[k] && b_.across(k) == x) return;  // x is the end's own neighbour
+        if (b_.used_[k] && b_.across(k) == x) return false;  // x is the end's own neighbour
     FaceId y = walk_budget_ == 0 ? kNone : towards_end(side, x);
     uint32_t from = kNoOrder;
     if (y == kNone) {
@@ -211,6 +211,7 @@ void PathGrower::rotate(uint32_t side, HalfedgeId h) {
     if (from != kNoOrder) reverse(side, from);
     trial_.push_back({side, h, xy, from});
     ends_[side] = y;
+    return true;
 }
 
 // A rotation keeps its pivot x where it was and reverses the part beyond it, so undoing one
@@ -245,17 +246,19 @@ void PathGrower::run(StructId path_root) {
     start(path_root);
     const uint32_t nf = b_.mesh_.num_faces();
     uint64_t rng = 0x9e3779b97f4a7c15ULL, budget = 16ULL * nf, idle = 0;  // xorshift: reproducible
+    bool moved = true;                                                    // the ends changed since take_all() last found nothing
     while (loops_ > 0 && budget > 0 && idle < kWindow) {
-        if (take_all()) {
+        if (moved && take_all()) {
             idle = 0;
             continue;
         }
+        moved = false;
         rng ^= rng << 13, rng ^= rng >> 7, rng ^= rng << 17;
         const uint32_t side = rng & 1, k = static_cast<uint32_t>((rng >> 1) % 3);
         const HalfedgeId h = Mesh::halfedge(ends_[side], k);
         --budget, ++idle;
-        if (b_.passable(h) && !b_.used_[h] && b_.find(b_.sid_[b_.across(h)]) == root_) rotate(side, h);
-        if (trial_cost_ >= kSplitCost + 6) undo_trial();  // too far from the pattern: back to the last take
+        if (b_.passable(h) && !b_.used_[h] && b_.find(b_.sid_[b_.across(h)]) == root_) moved |= rotate(side, h);
+        if (trial_cost_ >= kSplitCost + 6) undo_trial(), moved = true;  // too far from the pattern: back to the last take
     }
     undo_trial();
 }

@@ -14,6 +14,7 @@
 #include <utility>
 #include <vector>
 
+#include "bucket_queue.hpp"
 #include "core/face_sides.hpp"
 #include "core/id_vector.hpp"
 #include "singlestrip/mesh.hpp"
@@ -68,10 +69,10 @@ private:
         int swaps;
         FaceId x;
         HalfedgeId end;
-        bool operator<(const AugEntry& o) const { return swaps > o.swaps; }  ///< fewest swaps on top
+        [[nodiscard]] int key() const { return swaps; }
     };
-    std::vector<AugEntry> aug_heap_;
-    std::vector<AugEntry> aug_ends_;  ///< forest_pass_fewest(): queued path ends, cheapest on top
+    BucketQueue<AugEntry> aug_buckets_;      ///< augment_fewest_swaps()' and forest_pass_fewest()'s queue
+    BucketQueue<AugEntry> aug_end_buckets_;  ///< forest_pass_fewest(): queued path ends, cheapest first
 
     [[nodiscard]] FaceId across(HalfedgeId h) const { return mesh_.neighbor(h); }
     [[nodiscard]] bool passable(HalfedgeId h) const { return !mesh_.is_boundary(h) && !blocked_[h]; }
@@ -157,6 +158,30 @@ private:
     bool augment_fewest_swaps(FaceId u, IdVector<FaceId, uint32_t>& stamp, uint32_t mark, size_t budget);
     /// Swaps settled by one step of augment_fewest_swaps(): x takes h as its matched edge.
     [[nodiscard]] int step_swaps(FaceId x, HalfedgeId h, bool x_is_root, bool y_is_end) const;
+    /// While the fewest-swap searches run (empty otherwise), per face: bits 0-2 its edges crossed
+    /// (passable, not matched), bits 3-5 passable, bit 6 vlink_. step_swaps() reads one byte a
+    /// face, not six edges' flags (it was the searches' top self-time). Kept by set_matched().
+    IdVector<FaceId, uint8_t> cross_;
+    [[nodiscard]] uint8_t cross_bits(FaceId f) const {
+        uint32_t b = static_cast<uint32_t>(vlink_[f]) << 6;
+        for (uint32_t k = 0; k < 3; ++k) {
+            const HalfedgeId a = Mesh::halfedge(f, k);
+            b |= static_cast<uint32_t>(passable(a)) << (k + 3) | static_cast<uint32_t>(passable(a) && !matched_[a]) << k;
+        }
+        return static_cast<uint8_t>(b);
+    }
+    void cross_on(bool on) {
+        if (!on) return cross_.reset();
+        cross_.assign(mesh_.num_faces(), 0);
+        for (FaceId f : mesh_.faces()) cross_[f] = cross_bits(f);
+    }
+    /// set_pair(matched_, h, value), cross_ kept.
+    void set_matched(HalfedgeId h, uint8_t value) {
+        set_pair(matched_, h, value);
+        if (cross_.empty()) return;
+        cross_[Mesh::face(h)] = cross_bits(Mesh::face(h));
+        cross_[across(h)] = cross_bits(across(h));
+    }
     // All short faces' augmenting paths at once (matching_forest.cpp).
     void augment_forest(std::vector<FaceId>& short_faces, IdVector<FaceId, uint32_t>& stamp, uint32_t& mark);
     uint32_t forest_pass(const std::vector<FaceId>& roots, IdVector<FaceId, uint32_t>& stamp, uint32_t base, size_t& work);

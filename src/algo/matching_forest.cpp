@@ -24,8 +24,8 @@ namespace singlestrip::matching {
 // becomes matched, the inner face's edge to z unmatched.
 void MatchingBuilder::flip_to_root(FaceId z) {
     for (; aug_prev_[z] != kNone; z = aug_prev_[z]) {
-        set_pair(matched_, aug_matched_[z], 0);
-        set_pair(matched_, aug_unmatched_[z], 1);
+        set_matched(aug_matched_[z], 0);
+        set_matched(aug_unmatched_[z], 1);
     }
 }
 
@@ -97,25 +97,15 @@ void MatchingBuilder::augment_forest(std::vector<FaceId>& short_faces, IdVector<
 // faces, and a new pass gives them those faces back (docs/algorithm.md, step 6).
 uint32_t MatchingBuilder::forest_pass_fewest(const std::vector<FaceId>& roots, IdVector<FaceId, uint32_t>& stamp, uint32_t base,
                                              size_t& work) {
-    std::vector<AugEntry>&heap = aug_heap_, &ends = aug_ends_;
+    BucketQueue<AugEntry>&heap = aug_buckets_, &ends = aug_end_buckets_;
     heap.clear(), ends.clear();
     std::vector<uint8_t> dead(roots.size(), 0);
     auto tree = [&](FaceId f) { return stamp[f] >= base ? (stamp[f] - base) / 2 : UINT32_MAX; };
-    auto push = [](std::vector<AugEntry>& q, AugEntry e) {
-        q.push_back(e);
-        std::push_heap(q.begin(), q.end());
-    };
-    auto pop = [](std::vector<AugEntry>& q) {
-        std::pop_heap(q.begin(), q.end());
-        const AugEntry e = q.back();
-        q.pop_back();
-        return e;
-    };
     for (uint32_t t = 0; t < roots.size(); ++t) {
         stamp[roots[t]] = base + 2 * t;
         aug_prev_[roots[t]] = kNone;
         aug_swaps_[roots[t]] = 0;
-        push(heap, {0, roots[t], kNone});
+        heap.push({0, roots[t], kNone});
     }
     const size_t limit = kFewestWork * size_t{mesh_.num_faces()};
     enum class Ends { None, Waiting, Taking, Late } mode = Ends::None;
@@ -124,15 +114,15 @@ uint32_t MatchingBuilder::forest_pass_fewest(const std::vector<FaceId>& roots, I
     while ((!heap.empty() || !ends.empty()) && work < limit && 4 * found < roots.size()) {
         if (mode == Ends::Waiting && work - since > kEndWait) mode = Ends::Taking, before = found;
         if (mode == Ends::Taking && ends.empty()) mode = found > before ? Ends::None : Ends::Late;  // Late: none was live
-        const bool take = !ends.empty() && (mode == Ends::Taking || heap.empty() || !(ends.front() < heap.front()));
-        const AugEntry top = pop(take ? ends : heap);
+        const bool take = !ends.empty() && (mode == Ends::Taking || heap.empty() || ends.top().swaps <= heap.top().swaps);
+        const AugEntry top = (take ? ends : heap).pop();
         const FaceId x = top.x;
         const uint32_t t = tree(x);
         if (dead[t]) continue;
         if (top.end != kNone) {  // root(t) ~ x - y ~ root(ty)
             const uint32_t ty = tree(across(top.end));
             if (dead[ty]) continue;
-            set_pair(matched_, top.end, 1);
+            set_matched(top.end, 1);
             flip_to_root(x), flip_to_root(across(top.end));
             --quota_[roots[t]], --quota_[roots[ty]];
             dead[t] = dead[ty] = 1;
@@ -148,7 +138,7 @@ uint32_t MatchingBuilder::forest_pass_fewest(const std::vector<FaceId>& roots, I
             const uint32_t ty = tree(y);
             if (ty != UINT32_MAX) {  // an outer face of another live tree: an end
                 if (ty == t || dead[ty] || (stamp[y] - base) % 2 != 0) continue;
-                push(ends, {top.swaps + step_swaps(x, h, root, true) + aug_swaps_[y], x, h});
+                ends.push({top.swaps + step_swaps(x, h, root, true) + aug_swaps_[y], x, h});
                 if (mode == Ends::None) mode = Ends::Waiting, since = work;
                 continue;
             }
@@ -161,7 +151,7 @@ uint32_t MatchingBuilder::forest_pass_fewest(const std::vector<FaceId>& roots, I
                 stamp[z] = base + 2 * t;
                 aug_prev_[z] = x, aug_unmatched_[z] = h, aug_matched_[z] = e;
                 aug_swaps_[z] = swaps;
-                push(heap, {swaps, z, kNone});
+                heap.push({swaps, z, kNone});
             }
         }
     }

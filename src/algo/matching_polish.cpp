@@ -28,11 +28,11 @@ int MatchingBuilder::swaps_among(const std::vector<FaceId>& faces, const IdVecto
 // at g (the only other face short); keep it if the swaps around the path drop. True if kept.
 bool MatchingBuilder::polish_at(FaceId f, HalfedgeId m, PolishScratch& s) {
     const FaceId g = across(m);
-    set_pair(matched_, m, 0);
+    set_matched(m, 0);
     ++quota_[f], ++quota_[g];
     if (!augment_fewest_swaps(f, s.stamp, ++s.mark, kPolishBudget) || quota_[g] != 0) {
         if (quota_[f] == 0) throw InternalError("matching engine: a polishing path ended away from its face's mate");
-        set_pair(matched_, m, 1);
+        set_matched(m, 1);
         --quota_[f], --quota_[g];
         return false;
     }
@@ -56,10 +56,10 @@ bool MatchingBuilder::polish_at(FaceId f, HalfedgeId m, PolishScratch& s) {
     const int after = swaps_among(s.faces, s.in_set, s.set_mark);
     auto apply = [&](bool new_path) {
         for (const auto& [on, off] : s.steps) {
-            set_pair(matched_, on, new_path);
-            if (off != kNone) set_pair(matched_, off, !new_path);
+            set_matched(on, new_path);
+            if (off != kNone) set_matched(off, !new_path);
         }
-        set_pair(matched_, m, !new_path);
+        set_matched(m, !new_path);
     };
     apply(false);
     if (after >= swaps_among(s.faces, s.in_set, s.set_mark)) return false;
@@ -78,6 +78,7 @@ void MatchingBuilder::polish() {
     PolishScratch s;
     s.stamp.assign(nf, 0), s.in_set.assign(nf, 0);
     aug_prev_.assign(nf, kNone), aug_matched_.assign(nf, kNone), aug_unmatched_.assign(nf, kNone);
+    cross_on(true);  // augment_fewest_swaps() reads it
     auto crossed = [&](HalfedgeId a) { return passable(a) && !matched_[a]; };
     for (FaceId f : mesh_.faces()) {
         if (quota_[f] != 0 || vlink_[f] || degree(f) != 3) continue;
@@ -90,6 +91,7 @@ void MatchingBuilder::polish() {
         if (swaps == 0 || m == kNone || vlink_[across(m)] || degree(across(m)) != 3) continue;
         if (polish_at(f, m, s)) ++stats_.polished;
     }
+    cross_on(false);
     for (const auto& [f, q] : hidden) quota_[f] = q;
 }
 

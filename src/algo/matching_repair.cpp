@@ -198,39 +198,30 @@ int MatchingBuilder::step_swaps(FaceId x, HalfedgeId h, bool x_is_root, bool y_i
     const FaceId y = Mesh::face(t);
     const HalfedgeId yp_in = x_is_root ? kNone : mesh_.twin(aug_unmatched_[x]);  // x's previous partner's matched edge
     const FaceId yp = x_is_root ? FaceId(kNone) : Mesh::face(yp_in);
-    // Each face's crossed edges as three bits, before and after the flip, read once per face
-    // (swap_test() through a predicate read about eight edges' flags per edge).
-    auto old_mask = [&](FaceId f) {
-        uint32_t m = 0;
-        for (uint32_t k = 0; k < 3; ++k) {
-            const HalfedgeId a = Mesh::halfedge(f, k);
-            m |= static_cast<uint32_t>(passable(a) && !matched_[a]) << k;
-        }
-        return m;
-    };
-    auto new_mask = [&](FaceId f, uint32_t old) {
+    // A face's crossed edges before the flip (its cross_ byte: bits 0-2, passable 3-5, vlink 6)
+    // and after: x, y and yp cross every passable edge but their new matched one.
+    auto new_mask = [&](FaceId f, uint32_t bits) {
         const HalfedgeId m = f == x ? h : f == y ? t : f == yp ? yp_in : HalfedgeId(kNone);
-        if (m == kNone) return old;
-        uint32_t p = 0;
-        for (uint32_t k = 0; k < 3; ++k) p |= static_cast<uint32_t>(passable(Mesh::halfedge(f, k))) << k;
-        return p & ~(1u << Mesh::index_in_face(m));
+        if (m == kNone) return bits;
+        return (bits & ~7u) | (((bits >> 3) & 7u) & ~(1u << Mesh::index_in_face(m)));
     };
     static constexpr std::array<uint8_t, 8> kOnes = {0, 1, 1, 2, 1, 2, 2, 3};
-    // swap_test() of crossed edge a between faces with masks ma (a's face) and mb (its twin's).
-    auto sw = [&](HalfedgeId a, uint32_t ma, uint32_t mb) {
+    auto links = [](uint32_t bits) { return kOnes[bits & 7u] + (bits >> 6); };
+    // swap_test() of crossed edge a between faces with bytes ba (a's face) and bb (its twin's).
+    auto sw = [&](HalfedgeId a, uint32_t ba, uint32_t bb) {
         const uint32_t ia = Mesh::index_in_face(a), ib = Mesh::index_in_face(mesh_.twin(a));
-        if (!((ma >> ia) & 1)) return 0;
-        if (kOnes[ma] + vlink_[Mesh::face(a)] != 2 || kOnes[mb] + vlink_[across(a)] != 2) return 0;
-        return static_cast<int>(((ma >> ((ia + 2) % 3)) & 1) == ((mb >> ((ib + 1) % 3)) & 1));
+        if (!((ba >> ia) & 1) || links(ba) != 2 || links(bb) != 2) return 0;
+        return static_cast<int>(((ba >> ((ia + 2) % 3)) & 1) == ((bb >> ((ib + 1) % 3)) & 1));
     };
-    const uint32_t ox = old_mask(x), oy = old_mask(y), nx = new_mask(x, ox), ny = new_mask(y, oy);
+    const uint32_t ox = cross_[x], oy = cross_[y], nx = new_mask(x, ox), ny = new_mask(y, oy);
     int d = -sw(h, ox, oy);
+    // Around f: its passable edges but `skip` (all of them, or only the crossed ones).
     auto around = [&](FaceId f, HalfedgeId skip, uint32_t of, uint32_t nf, bool all) {
-        for (HalfedgeId a : sides(f)) {
-            if (a == skip || !passable(a) || !(all || !matched_[a])) continue;
-            const FaceId g = across(a);
-            const uint32_t og = old_mask(g);
-            d += sw(a, nf, new_mask(g, og)) - sw(a, of, og);
+        for (uint32_t k = 0; k < 3; ++k) {
+            const HalfedgeId a = Mesh::halfedge(f, k);
+            if (a == skip || !((of >> (k + 3)) & 1) || !(all || ((of >> k) & 1))) continue;
+            const uint32_t og = cross_[across(a)];
+            d += sw(a, nf, new_mask(across(a), og)) - sw(a, of, og);
         }
     };
     around(x, h, ox, nx, true);
@@ -244,36 +235,34 @@ int MatchingBuilder::step_swaps(FaceId x, HalfedgeId h, bool x_is_root, bool y_i
 // patterned region breaks the pattern along its whole length (turbine.off: 78 short faces added
 // 894 swaps); this one follows the pattern where it can (docs/algorithm.md, step 6).
 bool MatchingBuilder::augment_fewest_swaps(FaceId u, IdVector<FaceId, uint32_t>& stamp, uint32_t mark, size_t budget) {
-    std::vector<AugEntry>& heap = aug_heap_;
-    heap.assign(1, AugEntry{0, u, kNone});
+    BucketQueue<AugEntry>& heap = aug_buckets_;
+    heap.clear();
+    heap.push(AugEntry{0, u, kNone});
     stamp[u] = mark;
     aug_prev_[u] = kNone;
     size_t reached = 1;
     while (!heap.empty() && reached < budget) {
-        std::pop_heap(heap.begin(), heap.end());
-        const AugEntry top = heap.back();
-        heap.pop_back();
+        const AugEntry top = heap.pop();
         const FaceId x = top.x;
         if (top.end != kNone) {  // flip the path back to u
             const HalfedgeId h = top.end;
             const FaceId y = across(h);
             if (quota_[y] == 0) continue;
-            set_pair(matched_, h, 1);
+            set_matched(h, 1);
             for (FaceId z = x; z != u; z = aug_prev_[z]) {
-                set_pair(matched_, aug_matched_[z], 0);
-                set_pair(matched_, aug_unmatched_[z], 1);
+                set_matched(aug_matched_[z], 0);
+                set_matched(aug_unmatched_[z], 1);
             }
             --quota_[u];
             --quota_[y];
             return true;
         }
         for (HalfedgeId h : sides(x)) {
-            if (!passable(h) || matched_[h]) continue;
+            if (!((cross_[x] >> Mesh::index_in_face(h)) & 1)) continue;  // not passable, or matched
             const FaceId y = across(h);
             if (stamp[y] == mark) continue;
             if (quota_[y] > 0) {
-                heap.push_back({top.swaps + step_swaps(x, h, x == u, true), x, h});
-                std::push_heap(heap.begin(), heap.end());
+                heap.push({top.swaps + step_swaps(x, h, x == u, true), x, h});
                 continue;
             }
             stamp[y] = mark;
@@ -286,8 +275,7 @@ bool MatchingBuilder::augment_fewest_swaps(FaceId u, IdVector<FaceId, uint32_t>&
                 aug_prev_[z] = x;
                 aug_unmatched_[z] = h;
                 aug_matched_[z] = e;
-                heap.push_back({swaps, z, kNone});
-                std::push_heap(heap.begin(), heap.end());
+                heap.push({swaps, z, kNone});
                 ++reached;
             }
         }
@@ -311,6 +299,7 @@ void MatchingBuilder::repair_short(std::vector<FaceId>& short_faces) {
         }
     };
     plain_arrays(true);
+    cross_on(!plain_paths_);
     uint32_t mark = 0;
     size_t settled = 0;  // by the last round
     for (size_t budget : {size_t{64}, size_t{1024}}) {
@@ -329,6 +318,7 @@ void MatchingBuilder::repair_short(std::vector<FaceId>& short_faces) {
     constexpr size_t kForestMost = 64;  // libcgal-demo: at most 44 left where the forest runs
     if (!plain_paths_ && short_faces.size() >= 2 && short_faces.size() <= kForestMost && settled >= short_faces.size())
         augment_forest_fewest(short_faces, stamp, mark);
+    cross_on(false);
     plain_arrays(false);
     if (short_faces.empty()) return;
     // Edmonds from each face alone, bounded so that all of them touch O(F) faces: a face it
@@ -462,7 +452,8 @@ void MatchingBuilder::settle_leftovers() {
 // them before the joins build theirs (issue 17's peak memory).
 void MatchingBuilder::release_repair_scratch() {
     auto release = [](auto& v) { std::remove_reference_t<decltype(v)>().swap(v); };
-    release(aug_prev_), release(aug_matched_), release(aug_unmatched_), release(aug_queue_), release(aug_heap_);
+    release(aug_prev_), release(aug_matched_), release(aug_unmatched_), release(aug_queue_);
+    aug_buckets_ = {}, aug_end_buckets_ = {};
     release(bl_stamp_), release(bl_seen_), release(bl_base_), release(bl_parent_), release(bl_label_);
     release(bl_touched_), release(bl_queue_), release(bl_merge_);
     release(ball_local_), release(ball_whole_), release(ball_short_);
