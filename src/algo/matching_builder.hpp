@@ -192,7 +192,8 @@ private:
     static constexpr size_t kEndWait = 256;
     static constexpr size_t kFewestWork = 1;  ///< fewest-swap forest: faces expanded per mesh face at most
     void flip_to_root(FaceId z);
-    static constexpr size_t kForestWork = 8;  ///< forest passes: faces expanded per mesh face at most
+    static constexpr size_t kForestWork = 8;     ///< forest passes: faces expanded per mesh face at most
+    static constexpr uint32_t kForestYield = 8;  ///< forest passes: roots per path settled, at most, for another pass
     // Augmenting path from one short face through blossoms (matching_blossom.cpp).
     /// Exhausted: the budget ran out (no path among the faces reached); Unknown: the search met
     /// faces its graph does not model (pinned faces wanting two matched edges).
@@ -299,6 +300,7 @@ private:
     std::vector<uint32_t> walk(uint32_t& swaps) const;
     StripResult finish(std::vector<uint32_t> order, uint32_t swaps);
     StripResult finish_or_grow(std::vector<uint32_t> order, uint32_t swaps);
+    static constexpr uint64_t kGrowthWorthPercent = 1;  ///< finish_or_grow(): extra triangles from which growth may win
     StripResult grow(Mesh mesh, uint32_t splits) const;
     std::pair<StripResult, StripResult> grow_two(Mesh a, uint32_t splits_a, Mesh b, uint32_t splits_b) const;
     static constexpr uint32_t kParallelGrowMax = 4u << 20;  ///< faces up to which grow_two() uses two threads

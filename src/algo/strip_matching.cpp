@@ -583,11 +583,15 @@ StripResult MatchingBuilder::fallback() {
 // builder's turns often need none (cylinder.off: +5.1% against +2.5%): the better of the two.
 // After chain splits, the growth builder on the mesh before them is a candidate too: where the
 // corridors' junctions pair up along their turns it needs fewer (hole corridors, 10K: +2.98%
-// against +3.44%).
+// against +3.44%). Not below 1% extra: there the growth builder never won (libcgal-demo: +10 to
+// +17% where the engine had under +1%), and on a grid with a hole every 70 x 70 cells it cost a
+// fifth of the stage and grew faster than the mesh (docs/algorithm.md, step 9).
 StripResult MatchingBuilder::finish_or_grow(std::vector<uint32_t> order, uint32_t swaps) {
     if (stats_.parity_splits == 0) return finish(std::move(order), swaps);
     Mesh original = input_mesh();
     StripResult r = finish(std::move(order), swaps);
+    const uint64_t extra = r.stats.output_triangles - uint64_t{stats_.input_triangles};
+    if (extra * 100 < kGrowthWorthPercent * uint64_t{stats_.input_triangles}) return r;
     release_work_arrays();
     StripResult g;
     if (chain_splits_ && pre_merge_) {

@@ -487,6 +487,23 @@ TriangleSoup make_disk_many_holes(uint32_t bx, uint32_t by) {
     return drop_faces(grid, removed);
 }
 
+TriangleSoup make_sparse_holes(uint32_t n, uint32_t period) {
+    require(n >= 1 && period >= 3, "sparse holes need n >= 1, period >= 3");
+    TriangleSoup s;
+    const uint32_t w = n + 1;
+    for (uint32_t j = 0; j <= n; ++j)
+        for (uint32_t i = 0; i <= n; ++i) s.points.push_back({static_cast<double>(i), static_cast<double>(j), 0.0});
+    auto hole = [&](uint32_t i) { return i % period == period / 2 && i >= 1 && i + 1 < n; };
+    for (uint32_t j = 0; j < n; ++j)
+        for (uint32_t i = 0; i < n; ++i) {
+            if (hole(i) && hole(j)) continue;
+            const uint32_t a = j * w + i, b = a + 1, c = a + w + 1, d = a + w;  // CCW corners
+            s.triangles.push_back({a, b, c});
+            s.triangles.push_back({a, c, d});
+        }
+    return s;
+}
+
 TriangleSoup make_eared_grid(uint32_t nx, uint32_t ny) {
     require(nx >= 1 && ny >= 1, "eared grid needs nx, ny >= 1");
     TriangleSoup s = make_grid_cells(nx, ny, 1.0, [](uint32_t, uint32_t) { return true; });
@@ -577,6 +594,8 @@ const char* awkward_family_name(AwkwardFamily family) noexcept {
             return "hole_ladder";
         case AwkwardFamily::HighGenus:
             return "high_genus";
+        case AwkwardFamily::SparseHoles:
+            return "sparse_holes";
     }
     return "unknown";
 }
@@ -619,6 +638,10 @@ WalledMesh make_awkward(AwkwardFamily family, uint32_t triangles) {
             return {make_disk_with_holes(rounded((f - 6) / 10), 1), {}};  // F = 10k + 6
         case AwkwardFamily::HighGenus:
             return {make_genus_surface(std::max(1u, rounded((f - 28) / 36)), 1), {}};  // F = 36g + 28
+        case AwkwardFamily::SparseHoles: {
+            const uint32_t n = std::max(1u, rounded(std::sqrt(f / 2)));  // F ~ 2 n^2
+            return {make_sparse_holes(n, std::clamp(n / 2, 3u, 70u)), {}};
+        }
     }
     throw RequestError("generator: unknown awkward family");
 }

@@ -147,6 +147,14 @@ WalledMesh make_serpentine_walls(uint32_t walls, uint32_t length);
 /// V=(nx+1)(ny+1) - h_2, F=2 nx ny - h_0 - 2h_1 - 8h_2, chi=1-h, b=1+h, g=0.
 TriangleSoup make_disk_many_holes(uint32_t bx, uint32_t by);
 
+/// A grid with a hole far from every other: n x n unit cells, every diagonal from (i, j) to
+/// (i+1, j+1) (its dual graph is bipartite, the two triangles of a cell of opposite colours), and
+/// the cell (i, j) with i mod p = j mod p = p/2 removed, unless it touches the border. The engines'
+/// searches meet each hole's colour shortfall far from any other hole's (issue 17: super-linear
+/// at p = 70 before the forest's yield rule). \pre n >= 1, p >= 3.
+/// V=(n+1)^2, F=2(n^2-h), chi=1-h, b=1+h, g=0, with h the holes.
+TriangleSoup make_sparse_holes(uint32_t n, uint32_t period);
+
 /// Ears next to faces with two passable edges: make_grid_disk(nx, ny) with a two-triangle spike
 /// on every bottom and top border edge. A spike is a face T on the border edge (two passable
 /// edges: to the grid and to the ear) and an ear E on T's edge at the edge's left end (one
@@ -183,14 +191,15 @@ enum class AwkwardFamily : uint8_t {
     SpikedComb,       ///< make_spiked_comb(teeth, 5)
     HoleLadder,       ///< make_disk_with_holes(k, 1): a hole every ten faces, in one row
     HighGenus,        ///< make_genus_surface(g, 1): genus g, about 36 faces per handle
+    SparseHoles,      ///< make_sparse_holes(n, 70): a one-cell hole per ~9,800 faces (smaller: n/2)
 };
 inline constexpr AwkwardFamily kAwkwardFamilies[] = {
     AwkwardFamily::HoleCorridors, AwkwardFamily::SlitCorridors, AwkwardFamily::SlitWalls, AwkwardFamily::SerpentineWalls,
     AwkwardFamily::ManyHoles,     AwkwardFamily::Ears,          AwkwardFamily::OpenCone,  AwkwardFamily::ClosedCone,
-    AwkwardFamily::SpikedComb,    AwkwardFamily::HoleLadder,    AwkwardFamily::HighGenus};
+    AwkwardFamily::SpikedComb,    AwkwardFamily::HoleLadder,    AwkwardFamily::HighGenus, AwkwardFamily::SparseHoles};
 
 /// "hole_corridors", "slit_corridors", "slit_walls", "serpentine_walls", "many_holes", "ears",
-/// "open_cone", "closed_cone", "spiked_comb", "hole_ladder", "high_genus".
+/// "open_cone", "closed_cone", "spiked_comb", "hole_ladder", "high_genus", "sparse_holes".
 const char* awkward_family_name(AwkwardFamily family) noexcept;
 
 /// The family at about `triangles` faces (grids kept roughly square, except the eared grid,
