@@ -1,9 +1,10 @@
 // singlestrip — a priority queue over small integer keys (buckets), for the fewest-swap searches.
 // Keys may go below the smallest popped so far (a search step may remove swaps), so the buckets
-// grow at either end. push() is O(1) amortized, pop() O(1) plus the empty buckets it passes; a
+// grow at either end (by doubling). push() is O(1) amortized, pop() O(1) plus the empty buckets it passes; a
 // binary heap paid O(log n) for both (the searches' queue holds up to ~1000 entries).
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <utility>
 #include <vector>
@@ -23,7 +24,10 @@ public:
     void push(const T& e) {
         const int key = e.key();
         if (used_ == 0) base_ = key;
-        if (key < base_) shift(static_cast<size_t>(base_ - key));
+        // Room below for at least as many keys as are in use: a chain of steps that each remove a
+        // swap lowers the key by one per push, and a shift per push cost O(range) each (a grid
+        // with sparse holes, 1M: a quarter of the strip stage).
+        if (key < base_) shift(std::max(static_cast<size_t>(base_ - key), used_));
         const size_t i = static_cast<size_t>(key - base_);
         if (i >= used_) grow(i + 1);
         buckets_[i].v.push_back(e);
