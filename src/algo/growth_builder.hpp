@@ -38,9 +38,13 @@ constexpr RegionId kRegion0{0};
 /// try_detour(): faces scanned near the anchor at most, always allowed, and earned per face taken.
 constexpr size_t kScanLimit = 1024, kScanMinimum = 16, kScanCreditPerFace = 8;
 
+/// Thrown by a bounded Builder once its deferred islands pass the bound (build_strip_growth_bounded()).
+struct OverBound {};
+
 class Builder {
 public:
-    Builder(Mesh mesh, const StripOptions& options) : mesh_(std::move(mesh)), opt_(options) {}
+    Builder(Mesh mesh, const StripOptions& options, uint32_t max_deferred = UINT32_MAX)
+        : mesh_(std::move(mesh)), opt_(options), max_deferred_(max_deferred) {}
 
     StripResult run();
 
@@ -48,6 +52,7 @@ private:
     // ---- per-face / per-half-edge state (resized on every split) ----
     Mesh mesh_;
     const StripOptions& opt_;
+    uint32_t max_deferred_;                 ///< deferred islands after which run() throws OverBound
     EdgeFlags blocked_;                     ///< per half-edge: constraint edge (never crossed)
     IdVector<FaceId, uint8_t> striped_;     ///< per face: already in the strip
     IdVector<FaceId, RegionId> region_;     ///< per face: region label of an unstriped face
@@ -191,5 +196,11 @@ private:
     void check_split_budget() const;
     SplitResult split_at(HalfedgeId h);
 };
+
+/// The growth builder as a candidate against a strip it must beat (the matching engine's): an
+/// empty result once more than `max_deferred` islands were deferred. Each island costs one split
+/// unless a detour splices it in, so the bound is set from the splits the candidate may spend.
+/// Otherwise as build_strip_growth(). O(F) when it gives up early.
+StripResult build_strip_growth_bounded(Mesh mesh, const StripOptions& options, uint32_t max_deferred);
 
 }  // namespace singlestrip::growth

@@ -109,7 +109,7 @@ void Builder::note_fundamental(FaceId f, RegionId r) {
 void Builder::defer(RegionId region, HalfedgeId anchor) {
     deferred_of_region_[region] = DeferredId(static_cast<uint32_t>(deferred_.size()));
     deferred_.push_back({region, anchor, false});
-    ++stats_.deferred_regions;
+    if (++stats_.deferred_regions > max_deferred_) throw OverBound{};
 }
 
 // Splits the edge of h at its midpoint, keeping the per-face and per-half-edge state in step.

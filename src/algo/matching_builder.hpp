@@ -300,6 +300,9 @@ private:
     std::vector<uint32_t> walk(uint32_t& swaps) const;
     StripResult finish(std::vector<uint32_t> order, uint32_t swaps);
     StripResult finish_or_grow(std::vector<uint32_t> order, uint32_t swaps);
+    /// finish_or_grow(): the splits of the strip the growth candidates must beat (grow()).
+    uint32_t beat_splits_ = kNoBound;
+    static constexpr uint32_t kNoBound = UINT32_MAX, kDeferSlack = 64;
     static constexpr uint64_t kGrowthWorthPercent = 1;  ///< finish_or_grow(): extra triangles from which growth may win
     StripResult grow(Mesh mesh, uint32_t splits) const;
     std::pair<StripResult, StripResult> grow_two(Mesh a, uint32_t splits_a, Mesh b, uint32_t splits_b) const;

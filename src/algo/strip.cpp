@@ -238,6 +238,17 @@ StripResult Builder::run() {
     return finish();
 }
 
+StripResult build_strip_growth_bounded(Mesh mesh, const StripOptions& options, uint32_t max_deferred) {
+    try {
+        Builder builder(std::move(mesh), options, max_deferred);
+        StripResult r = builder.run();
+        r.stats.engine = StripEngine::Growth;
+        return r;
+    } catch (const OverBound&) {
+        return StripResult{};
+    }
+}
+
 }  // namespace growth
 
 StripResult build_strip_growth(Mesh mesh, const StripOptions& options) {

@@ -21,6 +21,7 @@
 
 #include "core/gentle_growth.hpp"
 #include "core/topology.hpp"
+#include "growth_builder.hpp"
 #include "matching_builder.hpp"
 #include "singlestrip/errors.hpp"
 #include "singlestrip/strip.hpp"
@@ -479,13 +480,17 @@ void MatchingBuilder::release_work_arrays() noexcept {
 }
 
 // The growth builder on `mesh` (the input or a partly split copy that already cost `splits`);
-// an empty result when it fails (a broken precondition on a partly split mesh).
+// an empty result when it fails (a broken precondition on a partly split mesh) or, against a
+// strip of beat_splits_ splits, once it defers more than twice the islands it could split and
+// still win: detours splice islands in for free, but on libcgal-demo at most 26% of them.
 StripResult MatchingBuilder::grow(Mesh mesh, uint32_t splits) const {
     StripOptions o = opt_;
     o.engine = StripEngine::Growth;
     if (o.seed_face && o.source && !face_has_vertex(mesh, *o.seed_face, *o.source)) o.seed_face.reset();
+    if (beat_splits_ != kNoBound && splits > beat_splits_) return StripResult{};
+    const uint32_t bound = beat_splits_ == kNoBound ? kNoBound : 2 * (beat_splits_ - splits) + kDeferSlack;
     try {
-        StripResult r = build_strip_growth(std::move(mesh), o);
+        StripResult r = growth::build_strip_growth_bounded(std::move(mesh), o, bound);
         r.stats.splits += splits;
         return r;
     } catch (const InternalError&) {
@@ -583,15 +588,17 @@ StripResult MatchingBuilder::fallback() {
 // builder's turns often need none (cylinder.off: +5.1% against +2.5%): the better of the two.
 // After chain splits, the growth builder on the mesh before them is a candidate too: where the
 // corridors' junctions pair up along their turns it needs fewer (hole corridors, 10K: +2.98%
-// against +3.44%). Not below 1% extra: there the growth builder never won (libcgal-demo: +10 to
-// +17% where the engine had under +1%), and on a grid with a hole every 70 x 70 cells it cost a
-// fifth of the stage and grew faster than the mesh (docs/algorithm.md, step 9).
+// against +3.44%). Not below 1% extra: there the growth builder hardly ever wins (libcgal-demo:
+// +10 to +17% where the engine had under +1%), and on a grid with a hole every 70 x 70 cells it
+// cost a fifth of the stage and grew faster than the mesh (docs/algorithm.md, step 9). Above,
+// the growth runs give up once they cannot win (grow()).
 StripResult MatchingBuilder::finish_or_grow(std::vector<uint32_t> order, uint32_t swaps) {
     if (stats_.parity_splits == 0) return finish(std::move(order), swaps);
     Mesh original = input_mesh();
     StripResult r = finish(std::move(order), swaps);
     const uint64_t extra = r.stats.output_triangles - uint64_t{stats_.input_triangles};
     if (extra * 100 < kGrowthWorthPercent * uint64_t{stats_.input_triangles}) return r;
+    beat_splits_ = r.stats.splits;
     release_work_arrays();
     StripResult g;
     if (chain_splits_ && pre_merge_) {
