@@ -6,7 +6,6 @@
 #include <utility>
 #include <vector>
 
-#include "algo/growth_builder.hpp"
 #include "fixtures.hpp"
 #include "many_centres.hpp"
 #include "singlestrip/strip.hpp"
@@ -100,26 +99,6 @@ TEST(GrowthCavityTest, RimWalksAgreeWithTheFullSearch) {
         o.source = VertexId(nv / 3);
         o.target = VertexId(2 * nv / 3);
         expect_verified(m.soup, o, name + " source " + std::to_string(nv / 3) + " target " + std::to_string(2 * nv / 3));
-    }
-}
-
-// The bounded growth builder (the matching engine's candidate after parity splits): the same
-// strip as the plain one while its deferred islands stay within the bound, an empty result once
-// they pass it.
-TEST(GrowthBounded, SameStripWithinTheBoundNoneBeyond) {
-    for (AwkwardFamily family : {AwkwardFamily::ManyHoles, AwkwardFamily::SpikedComb, AwkwardFamily::SparseHoles}) {
-        const WalledMesh m = make_awkward(family, 3000);
-        const std::string what = awkward_family_name(family);
-        StripOptions o;
-        o.engine = StripEngine::Growth;
-        const StripResult plain = build_strip_growth(Mesh::from_soup(m.soup), o);
-        const uint32_t deferred = plain.stats.deferred_regions;
-        ASSERT_GT(deferred, 0u) << what;
-        const StripResult within = growth::build_strip_growth_bounded(Mesh::from_soup(m.soup), o, deferred);
-        EXPECT_EQ(within.order, plain.order) << what;
-        EXPECT_EQ(within.stats.splits, plain.stats.splits) << what;
-        const StripResult beyond = growth::build_strip_growth_bounded(Mesh::from_soup(m.soup), o, deferred - 1);
-        EXPECT_TRUE(beyond.order.empty()) << what;
     }
 }
 
