@@ -234,13 +234,18 @@ TEST(Mesh, PairingFromTheChecksIsTheSortedOne) {
     }
 }
 
-TEST(Mesh, PairingFromTheChecksIsCheckedAndOnlyForOneComponent) {
+TEST(Mesh, PairingFromTheChecksIsCheckedAndPairsEveryComponent) {
     TriangleSoup two = make_icosphere(1);
     const TriangleSoup other = make_icosphere(1);
     const auto nv = static_cast<uint32_t>(two.points.size());
     two.points.insert(two.points.end(), other.points.begin(), other.points.end());
     for (Triangle t : other.triangles) two.triangles.push_back({t[0] + nv, t[1] + nv, t[2] + nv});
-    EXPECT_TRUE(prepare_soup_components(two, PrepareOptions{}, "t").twin.empty());
+    PreparedSoup both = prepare_soup_components(two, PrepareOptions{}, "t");
+    ASSERT_EQ(both.num_components, 2u);
+    const Mesh given = Mesh::from_soup(both.soup, std::move(both.twin)), own = Mesh::from_soup(both.soup);
+    given.validate();
+    EXPECT_EQ(given.num_components(), 2u);
+    for (const HalfedgeId h : own.halfedges()) EXPECT_EQ(given.twin(h), own.twin(h));
 
     const TriangleSoup s = make_grid_disk(4, 3);
     const std::vector<uint32_t> good = prepare_soup_components(s, PrepareOptions{}, "t").twin;

@@ -2,7 +2,9 @@
 #pragma once
 
 #include <cstdint>
+#include <initializer_list>
 #include <optional>
+#include <span>
 #include <string_view>
 #include <vector>
 
@@ -15,7 +17,13 @@ namespace singlestrip {
 /// to exactly `faces`, in order, each with its winding. A swap is a repeated index.
 /// \pre consecutive faces share an edge; each face has three distinct vertices.
 /// \throw InternalError if the precondition is violated. Complexity O(n).
-std::vector<uint32_t> encode_triangle_strip(const std::vector<Triangle>& faces);
+std::vector<uint32_t> encode_triangle_strip(std::span<const Triangle> faces);
+inline std::vector<uint32_t> encode_triangle_strip(const std::vector<Triangle>& faces) {
+    return encode_triangle_strip(std::span<const Triangle>(faces));
+}
+inline std::vector<uint32_t> encode_triangle_strip(std::initializer_list<Triangle> faces) {
+    return encode_triangle_strip(std::span<const Triangle>(faces.begin(), faces.size()));
+}
 
 /// Decodes a GL_TRIANGLE_STRIP index sequence (degenerate triangles skipped). With `restart`,
 /// that value ends a strip and the next index starts a new one at even parity (primitive

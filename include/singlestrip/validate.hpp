@@ -68,7 +68,7 @@ struct PreparedSoup {
     std::vector<uint32_t> vertex_origin;
     /// The analysis' edge pairing of `soup` (after any flips): per half-edge 3f+k its partner,
     /// kNone on the boundary, for Mesh::from_soup(soup, twin) (no second sort of the half-edges).
-    /// Empty when there is more than one component (each is built on its own).
+    /// With several components, each one's part of it (renumbered) pairs that component.
     std::vector<uint32_t> twin;
 };
 

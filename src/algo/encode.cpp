@@ -301,7 +301,7 @@ void check_face(const Triangle& f, size_t j) {
 
 }  // namespace
 
-std::vector<uint32_t> encode_triangle_strip(const std::vector<Triangle>& faces) {
+std::vector<uint32_t> encode_triangle_strip(std::span<const Triangle> faces) {
     const size_t n = faces.size();
     if (n == 0) return {};
     for (size_t j = 0; j < n; ++j) check_face(faces[j], j);

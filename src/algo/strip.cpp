@@ -252,10 +252,7 @@ StripResult build_strip_growth_bounded(Mesh mesh, const StripOptions& options, u
 }  // namespace growth
 
 StripResult build_strip_growth(Mesh mesh, const StripOptions& options) {
-    growth::Builder builder(std::move(mesh), options);
-    StripResult r = builder.run();
-    r.stats.engine = StripEngine::Growth;
-    return r;
+    return growth::build_strip_growth_bounded(std::move(mesh), options, UINT32_MAX);  // never over the bound
 }
 
 StripResult build_strip(Mesh mesh, const StripOptions& options) {

@@ -446,7 +446,7 @@ PreparedSoup prepare_soup_components(TriangleSoup soup, const PrepareOptions& op
     }
     if (orient) apply_flips(soup, a.flip);
     out.component = number_components(a, &out.num_components);
-    if (out.num_components == 1) out.twin = flipped_twins(std::move(a.twin), orient ? &a.flip : nullptr);
+    out.twin = flipped_twins(std::move(a.twin), orient ? &a.flip : nullptr);
     out.soup = std::move(soup);
     return out;
 }

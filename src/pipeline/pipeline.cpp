@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <span>
 #include <string>
 #include <utility>
 
@@ -210,11 +211,8 @@ void strip_one(PipelineResult& r, std::vector<uint32_t>&& twin, bool self_check,
 std::vector<uint32_t> degenerate_joined_indices(const PipelineResult& r) {
     if (r.components.size() <= 1 || r.options.join == JoinMode::Degenerate) return r.indices;
     std::vector<std::vector<uint32_t>> strips;
-    for (const ComponentStrip& c : r.components) {
-        std::vector<Triangle> faces(r.arrays.faces.begin() + static_cast<std::ptrdiff_t>(c.first_face),
-                                    r.arrays.faces.begin() + static_cast<std::ptrdiff_t>(c.first_face + c.output_triangles));
-        strips.push_back(encode_triangle_strip(faces));
-    }
+    for (const ComponentStrip& c : r.components)
+        strips.push_back(encode_triangle_strip(std::span<const Triangle>(r.arrays.faces).subspan(c.first_face, c.output_triangles)));
     return join_strips(strips, JoinMode::Degenerate);
 }
 
@@ -259,8 +257,7 @@ PipelineResult stripify(TriangleSoup soup, const PipelineOptions& options, Pipel
         comp = std::vector<uint32_t>();  // not needed for one component: free it before the strip
         strip_one(r, std::move(prepared.twin), options.self_check, stage);
     } else {
-        prepared.twin = std::vector<uint32_t>();
-        detail::strip_components(r, comp, count, stage);
+        detail::strip_components(r, comp, count, std::move(prepared.twin), stage);
     }
     if (!origin.empty()) {
         results_to_given(r, origin);
