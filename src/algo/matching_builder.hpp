@@ -236,16 +236,31 @@ private:
     void requota(const SplitResult& sr);
     [[nodiscard]] FaceId chain_end(HalfedgeId h, uint32_t& faces) const;
     void split_chain(HalfedgeId h, uint32_t faces, std::vector<FaceId>* wanting);
+    /// A step of the chain forest (matching_chains.cpp): from outer face x across unmatched h and
+    /// along a forced chain of `faces` faces to y; z, y's mate then, is the next outer face.
     struct ChainStep {
-        StepId prev;  ///< the step that reached the face h leaves (kNone: the root)
+        StepId prev;  ///< the step whose z is x (kNone: x is the tree's root)
         HalfedgeId h;
-        uint32_t faces;
-        FaceId y;
+        uint32_t faces, cost;  ///< chain faces of this step, and of the tree path up to it
+        uint32_t tree;
+        FaceId x, y, z;  ///< z = kNone: a step that meets another tree (or a short face) at y
     };
-    bool augment_through_chains(FaceId u, size_t budget);
+    /// The chain forest's trees: per face, tree + 1 (0: none) and, for outer faces, the step
+    /// whose z it is (kNone: the root; for inner faces, the step whose y it is).
+    struct ChainForest {
+        IdVector<FaceId, uint32_t> tree;
+        IdVector<FaceId, StepId> reach;
+        std::vector<ChainStep> steps;
+        std::vector<FaceId> roots;
+        std::vector<uint8_t> alive;
+    };
     bool augment_all_through_chains(const std::vector<FaceId>& short_faces);
+    uint32_t chain_forest_pass(ChainForest& cf, size_t& left, size_t keep, size_t& work, size_t most);
+    void chain_grow(ChainForest& cf, StepId at, uint32_t cost, uint32_t t, std::vector<std::pair<uint32_t, StepId>>& out, size_t& work);
+    [[nodiscard]] bool chain_step_holds(const ChainForest& cf, StepId s) const;
+    bool apply_chain_meeting(ChainForest& cf, StepId m, size_t& work);
     [[nodiscard]] FaceId mate_of(FaceId y) const;
-    void apply_chain_path(const std::vector<ChainStep>& steps, StepId last);
+    std::vector<FaceId> apply_chain_path(const std::vector<ChainStep>& path);
     IdVector<FaceId, uint32_t> ch_stamp_;
     uint32_t ch_mark_ = 0;
     bool split_along_chains(const std::vector<FaceId>& short_faces);

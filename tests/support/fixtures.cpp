@@ -504,6 +504,25 @@ TriangleSoup make_sparse_holes(uint32_t n, uint32_t period) {
     return s;
 }
 
+TriangleSoup make_random_diagonal_holes(uint32_t n, uint32_t period, uint64_t seed) {
+    require(n >= 1 && period >= 3, "random diagonal holes need n >= 1, period >= 3");
+    TriangleSoup s;
+    const uint32_t w = n + 1;
+    for (uint32_t j = 0; j <= n; ++j)
+        for (uint32_t i = 0; i <= n; ++i) s.points.push_back({static_cast<double>(i), static_cast<double>(j), 0.0});
+    auto hole = [&](uint32_t i) { return i >= 1 && i + 1 < n && (n - 2 - i) % period == 0; };
+    Rng rng{seed};
+    for (uint32_t j = 0; j < n; ++j)
+        for (uint32_t i = 0; i < n; ++i) {
+            if (hole(i) && hole(j)) continue;
+            const uint32_t a = j * w + i, b = a + 1, c = a + w + 1, d = a + w;  // CCW corners
+            const bool ac = rng.next() & 1;
+            s.triangles.push_back(ac ? Triangle{a, b, c} : Triangle{a, b, d});
+            s.triangles.push_back(ac ? Triangle{a, c, d} : Triangle{b, c, d});
+        }
+    return s;
+}
+
 TriangleSoup make_eared_grid(uint32_t nx, uint32_t ny) {
     require(nx >= 1 && ny >= 1, "eared grid needs nx, ny >= 1");
     TriangleSoup s = make_grid_cells(nx, ny, 1.0, [](uint32_t, uint32_t) { return true; });
@@ -596,6 +615,8 @@ const char* awkward_family_name(AwkwardFamily family) noexcept {
             return "high_genus";
         case AwkwardFamily::SparseHoles:
             return "sparse_holes";
+        case AwkwardFamily::DiagonalHoles:
+            return "diagonal_holes";
     }
     return "unknown";
 }
@@ -641,6 +662,10 @@ WalledMesh make_awkward(AwkwardFamily family, uint32_t triangles) {
         case AwkwardFamily::SparseHoles: {
             const uint32_t n = std::max(1u, rounded(std::sqrt(f / 2)));  // F ~ 2 n^2
             return {make_sparse_holes(n, std::clamp(n / 2, 3u, 70u)), {}};
+        }
+        case AwkwardFamily::DiagonalHoles: {
+            const uint32_t n = std::max(1u, rounded(std::sqrt(f / 1.98)));  // F ~ 2 n^2 (1 - 1/100)
+            return {make_random_diagonal_holes(n, 10, 1), {}};
         }
     }
     throw RequestError("generator: unknown awkward family");
