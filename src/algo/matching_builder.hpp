@@ -24,7 +24,7 @@
 namespace singlestrip::matching {
 
 using StructId = Id<struct StructTag>;  ///< a loop or path of crossed edges (through the union-find)
-using StepId = Id<struct StepTag>;      ///< a step of the chain forest (augment_all_through_chains())
+using StepId = Id<struct StepTag>;      ///< a step of augment_through_chains()' search
 
 class MatchingBuilder {
 public:
@@ -255,7 +255,7 @@ private:
         std::vector<uint8_t> alive;
     };
     bool augment_all_through_chains(const std::vector<FaceId>& short_faces);
-    uint32_t chain_forest_pass(ChainForest& cf, size_t& left, size_t& work, size_t most);
+    uint32_t chain_forest_pass(ChainForest& cf, size_t& left, size_t keep, size_t& work, size_t most);
     void chain_grow(ChainForest& cf, StepId at, uint32_t cost, uint32_t t, std::vector<std::pair<uint32_t, StepId>>& out, size_t& work);
     [[nodiscard]] bool chain_step_holds(const ChainForest& cf, StepId s) const;
     bool apply_chain_meeting(ChainForest& cf, StepId m, size_t& work);

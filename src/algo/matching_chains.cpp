@@ -94,21 +94,20 @@ bool MatchingBuilder::split_along_chains(const std::vector<FaceId>& short_faces)
 // from one root at a time spent their budgets on one side of a mesh whose short faces lay on
 // both (random diagonals with a hole every 10 x 10 cells, 1M faces: 20 faces left short, the
 // growth fallback, +12.6% in 6 s). Applying a path changes the matching near it, so each is
-// checked against the matching of the moment first; passes repeat while they find paths. All
-// are paired, though two could stay as the strip's ends: loops only joined better
-// (diagonal_holes 100K: +1.4% -> +1.0%; b9_mesh 802 -> 746 extra, GL indices -16).
+// checked against the matching of the moment first; passes repeat while they find paths.
 bool MatchingBuilder::augment_all_through_chains(const std::vector<FaceId>& short_faces) {
     constexpr size_t kChainWork = 16;  // faces walked per mesh face, all passes together
     size_t left = 0;
     for (FaceId u : short_faces) left += quota_[u];
+    const size_t keep = ends_free() ? 2 : 0;
     const size_t most = kChainWork * size_t{mesh_.num_faces()};
     ChainForest cf;
     for (FaceId u : short_faces)
         if (quota_[u] > 0 && !vlink_[u]) cf.roots.push_back(u);
     size_t work = 0;
     bool any = false;
-    while (left > 0 && cf.roots.size() >= 2 && work < most) {
-        if (chain_forest_pass(cf, left, work, most) == 0) break;
+    while (left > keep && cf.roots.size() >= 2 && work < most) {
+        if (chain_forest_pass(cf, left, keep, work, most) == 0) break;
         any = true;
         std::erase_if(cf.roots, [&](FaceId f) { return quota_[f] == 0; });
         std::sort(cf.roots.begin(), cf.roots.end());
@@ -119,7 +118,7 @@ bool MatchingBuilder::augment_all_through_chains(const std::vector<FaceId>& shor
 
 // One pass of the chain forest from cf.roots; the paths it applies (their count) end two short
 // faces each, and the faces their local searches leave short join cf.roots for the next pass.
-uint32_t MatchingBuilder::chain_forest_pass(ChainForest& cf, size_t& left, size_t& work, size_t most) {
+uint32_t MatchingBuilder::chain_forest_pass(ChainForest& cf, size_t& left, size_t keep, size_t& work, size_t most) {
     cf.tree.assign(mesh_.num_faces(), 0);
     cf.reach.assign(mesh_.num_faces(), kNone);
     cf.steps.clear();
@@ -138,7 +137,7 @@ uint32_t MatchingBuilder::chain_forest_pass(ChainForest& cf, size_t& left, size_
     }
     uint32_t found = 0;
     std::vector<std::pair<uint32_t, StepId>> grown;
-    while (!queue.empty() && left > 0 && work < most) {
+    while (!queue.empty() && left > keep && work < most) {
         const Entry e = queue.pop();
         ++work;
         if (!cf.alive[e.tree]) continue;
