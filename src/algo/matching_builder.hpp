@@ -1,5 +1,6 @@
 // singlestrip — the matching engine's builder, shared by its source files (private header):
-//   strip_matching.cpp  pins, ear and bridge splits, the patterned matching, run() and the fallback;
+//   strip_matching.cpp  pins, the patterned matching, run() and the fallback;
+//   matching_bridges.cpp ears and bridges of the dual graph split, the splits any strip needs;
 //   matching_repair.cpp faces left short: augmenting paths, Edmonds in balls, splits beside them;
 //   matching_forest.cpp augmenting paths from all short faces at once (a breadth-first forest);
 //   matching_chains.cpp short faces at the junctions of forced chains: the chains split;
@@ -60,6 +61,9 @@ private:
     bool pre_merge_ = false;
     uint32_t pre_merge_splits_ = 0;
     bool chain_splits_ = false;  ///< split_along_chains() split something
+    uint32_t ear_splits_ = 0;    ///< split_ears(): ears split
+    /// split_bridges(): splits any single strip of the input needs (ears and bridges, docs/algorithm.md step 3)
+    uint32_t forced_splits_ = 0;
     // Augmenting search, per face: the outer face it was reached from and the two edges used.
     IdVector<FaceId, FaceId> aug_prev_;
     IdVector<FaceId, HalfedgeId> aug_matched_, aug_unmatched_;
@@ -122,7 +126,12 @@ private:
     SplitResult split(HalfedgeId h);
     void split_ears();
     void set_quotas();
-    std::vector<HalfedgeId> dual_bridges() const;
+    struct DualBridges {
+        std::vector<HalfedgeId> to_split;  ///< bridges with kMinBridgeSide faces or more on each side
+        uint32_t all = 0;                  ///< every bridge
+        uint32_t on_one_path = 0;          ///< the most bridges one path of faces crosses
+    };
+    DualBridges dual_bridges() const;
     static constexpr uint32_t kMinBridgeSide = 16;
     void split_bridges();
     bool chain_reaches_branch(FaceId f, FaceId from) const;
@@ -315,6 +324,7 @@ private:
     std::vector<uint32_t> walk(uint32_t& swaps) const;
     StripResult finish(std::vector<uint32_t> order, uint32_t swaps);
     StripResult finish_or_grow(std::vector<uint32_t> order, uint32_t swaps);
+    bool growth_may_win() const;
     /// finish_or_grow(): the splits of the strip the growth candidates must beat (grow()).
     uint32_t beat_splits_ = kNoBound;
     static constexpr uint32_t kNoBound = UINT32_MAX, kDeferSlack = 64;

@@ -7,7 +7,7 @@
 // midpoint split each, path ends for free where they touch. Design, the argument that it ends in
 // one strip, and what it costs: docs/algorithm.md, "The matching engine".
 //
-// This file: pins, ear and bridge splits, the patterned matching, run() and the growth fallback.
+// This file: pins, the patterned matching, run() and the growth fallback.
 #include <algorithm>
 #include <array>
 #include <bit>
@@ -98,103 +98,6 @@ SplitResult MatchingBuilder::split(HalfedgeId h) {
         if (pins_[i] != old) std::swap(vlink_[old], vlink_[pins_[i]]);  // the virtual link moves along
     }
     return sr;
-}
-
-// A face with one passable edge (an ear) can only end a strip. Unless it is a pinned face, it is
-// split with its neighbour g (+2 faces, even for the two ears a strip could end in: an end that
-// is not where the loops close blocks joins). The ear's children
-// and g's form a ring of four faces entered and left through g's other two edges, so g's
-// children are matched to each other (when g had three passable edges).
-void MatchingBuilder::split_ears() {
-    std::vector<FaceId> ears;
-    for (FaceId f : mesh_.faces())
-        if (degree(f) == 1) ears.push_back(f);
-    if (mesh_.num_faces() <= 2) return;
-    for (FaceId f : ears) {
-        if (f == pins_[0] || f == pins_[1] || degree(f) != 1) continue;
-        HalfedgeId h = Mesh::halfedge(f, 0);
-        while (!passable(h)) h = Mesh::next(h);
-        const FaceId g = across(h);
-        if (degree(g) == 1) continue;  // two faces only: an ear pair is a strip already
-        const HalfedgeId tn = Mesh::next(mesh_.twin(h));
-        const SplitResult sr = split(h);
-        const HalfedgeId inner = tn;  // after the split: g_b's half-edge towards g_a
-        if (degree(sr.g_a) == 3 && degree(sr.g_b) == 3 && num_matched(sr.g_a) == 0 && num_matched(sr.g_b) == 0)
-            set_pair(matched_, inner, 1);
-    }
-}
-
-// Passable edges whose removal disconnects the faces (bridges of the dual graph), by an
-// iterative lowpoint search that keeps no stack (parent edges lead back up, next_side says where
-// a face's scan resumes: 17 bytes a face; a stack of frames was the engine's memory peak on long
-// dual paths). A strip crosses such an edge exactly once, so the two sides must each
-// be covered by a path ending at it; split, the edge becomes two crossings (the four children
-// form a ring across it), which removes that parity constraint: a serpentine corridor of odd
-// length between walls has no 2-factor until its one-edge gaps are split.
-std::vector<HalfedgeId> MatchingBuilder::dual_bridges() const {
-    // Closed and unconstrained, every vertex has a whole ring of faces, a dual cycle through each
-    // edge at it: no bridge.
-    if (stats_.boundary_loops == 0 && opt_.constraint_edges.empty()) return {};
-    const uint32_t nf = mesh_.num_faces();
-    constexpr uint32_t kUnseen = 0;  // order is 1-based
-    IdVector<FaceId, uint32_t> order(nf, kUnseen), low(nf, 0), size(nf, 1);
-    IdVector<FaceId, HalfedgeId> parent_edge(nf, kNone);
-    IdVector<FaceId, uint8_t> next_side(nf, 0);
-    std::vector<HalfedgeId> bridges;
-    uint32_t time = 1;
-    for (FaceId r : mesh_.faces()) {
-        if (order[r] != kUnseen) continue;
-        order[r] = low[r] = time++;
-        for (FaceId f = r;;) {
-            if (next_side[f] < 3) {
-                const HalfedgeId h = Mesh::halfedge(f, next_side[f]++);
-                if (!passable(h) || mesh_.twin(h) == parent_edge[f]) continue;
-                const FaceId g = across(h);
-                if (order[g] == kUnseen) {
-                    order[g] = low[g] = time++;
-                    parent_edge[g] = h;
-                    f = g;
-                } else {
-                    low[f] = std::min(low[f], order[g]);
-                }
-                continue;
-            }
-            if (parent_edge[f] == kNone) break;
-            const FaceId p = Mesh::face(parent_edge[f]);
-            low[p] = std::min(low[p], low[f]);
-            size[p] += size[f];
-            // A small side (a spike, a pendant ring) is better joined as a loop later.
-            if (low[f] > order[p] && std::min(size[f], nf - size[f]) >= kMinBridgeSide) bridges.push_back(parent_edge[f]);
-            f = p;
-        }
-    }
-    return bridges;
-}
-
-// Walks from face f away from face `from` through faces with two passable edges; true if it
-// reaches a face with three (a branch) within a bound.
-bool MatchingBuilder::chain_reaches_branch(FaceId f, FaceId from) const {
-    for (uint32_t step = 0; step < 64; ++step) {
-        if (degree(f) == 3) return true;
-        if (degree(f) != 2) return false;
-        FaceId next = kNone;
-        for (HalfedgeId h : sides(f))
-            if (passable(h) && across(h) != from) next = across(h);
-        if (next == kNone) return false;
-        from = f;
-        f = next;
-    }
-    return false;
-}
-
-// Bridges on a chain that joins two branching faces are split; a chain ending in an ear or a
-// boundary (a fan, a strip of faces) is a strip already and is left alone.
-void MatchingBuilder::split_bridges() {
-    for (HalfedgeId h : dual_bridges()) {
-        const FaceId f = Mesh::face(h), g = across(h);
-        if (f == pins_[0] || f == pins_[1] || g == pins_[0] || g == pins_[1]) continue;
-        if (chain_reaches_branch(f, g) && chain_reaches_branch(g, f)) split(h);
-    }
 }
 
 // Matched edges wanted per face: passable edges beyond the two the strip crosses (one crossed
@@ -593,11 +496,9 @@ StripResult MatchingBuilder::fallback() {
 // cost a fifth of the stage and grew faster than the mesh (docs/algorithm.md, step 9). Above,
 // the growth runs give up once they cannot win (grow()).
 StripResult MatchingBuilder::finish_or_grow(std::vector<uint32_t> order, uint32_t swaps) {
-    if (stats_.parity_splits == 0) return finish(std::move(order), swaps);
+    if (stats_.parity_splits == 0 || !growth_may_win()) return finish(std::move(order), swaps);
     Mesh original = input_mesh();
     StripResult r = finish(std::move(order), swaps);
-    const uint64_t extra = r.stats.output_triangles - uint64_t{stats_.input_triangles};
-    if (extra * 100 < kGrowthWorthPercent * uint64_t{stats_.input_triangles}) return r;
     beat_splits_ = r.stats.splits;
     release_work_arrays();
     StripResult g;
@@ -611,6 +512,15 @@ StripResult MatchingBuilder::finish_or_grow(std::vector<uint32_t> order, uint32_
     }
     if (g.order.empty()) return r;
     return cost(g) < cost(r) ? as_fallback(std::move(g)) : r;
+}
+
+// Whether the growth builder can beat the strip as split now by kGrowthWorthPercent: the splits
+// any single strip needs for the dual graph's bridges are no margin (ears 1M: +66.7%, all of it
+// forced; the growth candidate was a third of the strip stage and never won).
+bool MatchingBuilder::growth_may_win() const {
+    const uint64_t extra = uint64_t{mesh_.num_faces()} - stats_.input_triangles;
+    const uint64_t forced = 2 * uint64_t{forced_splits_};
+    return (extra - std::min(extra, forced)) * 100 >= kGrowthWorthPercent * uint64_t{stats_.input_triangles};
 }
 
 // The input mesh again (input vertices keep their positions; midpoints come after them).
