@@ -27,6 +27,7 @@
 #include "fixtures.hpp"
 #include "singlestrip/errors.hpp"
 #include "singlestrip/strip.hpp"
+#include "split_bounds.hpp"
 #include "strip_check.hpp"
 
 using namespace singlestrip;
@@ -501,7 +502,7 @@ TEST_P(Engines, ThinEarsOfAPolygonOnACircle) {
 }
 
 // Issue 15's bound for the matching engine on the awkward families (10% extra triangles),
-// except the eared grid and the spiked comb, whose dead ends cost splits in any single strip:
+// except the eared grid, the spiked comb and the polygon tree, whose dead ends cost splits in any single strip:
 // a spike at least two (+4 triangles, docs/algorithm.md), and make_eared_grid puts a spike on
 // every border edge. Several sizes, as the families'
 // parameters change with the size (hole corridors: +182% at 12000 and 20000 triangles before
@@ -528,6 +529,12 @@ TEST_P(AwkwardSizes, FamiliesCostAtMostTenPercent) {
             // Each tooth hangs by 11 bridges of the dual graph; all but those between the two
             // ends must be split: at least 22 triangles per tooth, teeth = F / 15.
             EXPECT_LE(extra, 100.0 * 22 / 15 + 1) << "22 per tooth";
+        } else if (family == AwkwardFamily::PolygonTree) {
+            // Every one of the F - 1 interior edges is a bridge; all but those on the path between
+            // the strip's ends must be split.
+            const double least = 2.0 * (faces - 1 - singlestrip::testing::dual_tree_diameter(m.soup));
+            EXPECT_LE(extra, 100.0 * least / faces + 1) << "2 per bridge off one path";
+            EXPECT_GE(extra, 100.0 * least / faces) << "fewer splits than any single strip needs";
         } else if (family == AwkwardFamily::HoleLadder) {
             // About the least any single strip needs (SplitBounds.HoleLadder below): 2 per hole.
             EXPECT_LE(extra, 100.0 * 4 * (faces / 10) / faces + 1) << "4 per hole, holes = F / 10";

@@ -325,6 +325,10 @@ private:
     StripResult finish(std::vector<uint32_t> order, uint32_t swaps);
     StripResult finish_or_grow(std::vector<uint32_t> order, uint32_t swaps);
     bool growth_may_win() const;
+    bool mostly_tree() const;
+    bool many_ears() const;
+    bool mostly_tree_before_splits();
+    StripResult grow_unsplit();
     /// finish_or_grow(): the splits of the strip the growth candidates must beat (grow()).
     uint32_t beat_splits_ = kNoBound;
     static constexpr uint32_t kNoBound = UINT32_MAX, kDeferSlack = 64;
@@ -334,7 +338,7 @@ private:
     static constexpr uint32_t kParallelGrowMax = 4u << 20;  ///< faces up to which grow_two() uses two threads
     void keep_better(StripResult& r, StripResult alt) const;
     StripResult as_fallback(StripResult r) const;
-    StripResult fallback();
+    StripResult fallback(bool split_mesh_too = true);
     StripResult retry_or_fallback();
     bool plain_paths_ = false;  ///< step 6 by shortest augmenting paths (the retry before the fallback)
     /// One pin only (a source, a target or a seed face): first built as one loop with no pin,

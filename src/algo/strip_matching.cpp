@@ -464,13 +464,14 @@ std::pair<StripResult, StripResult> MatchingBuilder::grow_two(Mesh a, uint32_t s
 
 // Not one strip (paths whose ends never touch): the growth builder, which always ends in one
 // strip, finishes on the mesh as split so far.
-StripResult MatchingBuilder::fallback() {
+StripResult MatchingBuilder::fallback(bool split_mesh_too) {
     // The input mesh is a candidate too: the engine's splits (ears, bridges, parity) can cost the
     // growth builder more than they save (boeing.off's small parts: +90% against +26%).
     Mesh original = input_mesh();  // before mesh_ is handed over
     release_work_arrays();
     StripResult r;
-    if (pre_merge_) {                            // the mesh as split so far, and without the joins' splits
+    if (!split_mesh_too) {
+    } else if (pre_merge_) {                     // the mesh as split so far, and without the joins' splits
         Mesh before = pre_merge_mesh(original);  // built before mesh_ is moved (arguments have no order)
         auto [split, before_joins] = grow_two(std::move(mesh_), stats_.splits, std::move(before), pre_merge_splits_);
         keep_better(r, std::move(split));
@@ -521,6 +522,38 @@ bool MatchingBuilder::growth_may_win() const {
     const uint64_t extra = uint64_t{mesh_.num_faces()} - stats_.input_triangles;
     const uint64_t forced = 2 * uint64_t{forced_splits_};
     return (extra - std::min(extra, forced)) * 100 >= kGrowthWorthPercent * uint64_t{stats_.input_triangles};
+}
+
+// The bridges force splits on more than half the faces (+100% triangles): the dual graph is
+// mostly a tree, with no loops to match, and the engine's repair ended in the growth fallback
+// anyway (a random triangulation of a polygon, 1M: 14.6 s against 1.4 s; spiked_comb: +200%
+// against the fallback's +146.7%): the growth builder on the input, whose splits there are the
+// fewest (ears and bridges split first cost it time, not triangles). Ears alone force +66.7% at
+// most (two a face).
+bool MatchingBuilder::mostly_tree() const {
+    return uint64_t{2} * forced_splits_ > stats_.input_triangles;
+}
+
+// A tree of faces has many leaves (ears): a random triangulation of a polygon a third of its
+// faces. There the bridges are counted on the input, before the ears are split (then undone by
+// rebuilding the input: 1M, 2.6 s against the growth builder's 1.3).
+bool MatchingBuilder::many_ears() const {
+    uint32_t ears = 0;
+    for (FaceId f : mesh_.faces()) ears += degree(f) == 1;
+    return uint64_t{8} * ears >= mesh_.num_faces();
+}
+
+bool MatchingBuilder::mostly_tree_before_splits() {
+    const DualBridges b = dual_bridges();
+    forced_splits_ = b.all - std::min(b.all, b.on_one_path);
+    return mostly_tree();
+}
+
+StripResult MatchingBuilder::grow_unsplit() {
+    release_work_arrays();
+    StripOptions o = opt_;
+    o.engine = StripEngine::Growth;
+    return as_fallback(build_strip_growth(std::move(mesh_), o));
 }
 
 // The input mesh again (input vertices keep their positions; midpoints come after them).
@@ -579,8 +612,10 @@ StripResult MatchingBuilder::run() {
         pins_[0] = kNone;
         num_pins_ = 0;
     }
+    if (stats_.splits == 0 && many_ears() && mostly_tree_before_splits()) return grow_unsplit();  // no pin split
     split_ears();
     split_bridges();
+    if (mostly_tree()) return fallback(false);
     set_quotas();
     match_fans();
     choose_pattern();

@@ -202,15 +202,17 @@ enum class AwkwardFamily : uint8_t {
     HighGenus,        ///< make_genus_surface(g, 1): genus g, about 36 faces per handle
     SparseHoles,      ///< make_sparse_holes(n, 70): a one-cell hole per ~9,800 faces (smaller: n/2)
     DiagonalHoles,    ///< make_random_diagonal_holes(n, 10, 1): a one-cell hole per ~200 faces
+    PolygonTree,      ///< make_circle_polygon(F + 2): a tree of faces
 };
 inline constexpr AwkwardFamily kAwkwardFamilies[] = {
     AwkwardFamily::HoleCorridors, AwkwardFamily::SlitCorridors, AwkwardFamily::SlitWalls, AwkwardFamily::SerpentineWalls,
     AwkwardFamily::ManyHoles,     AwkwardFamily::Ears,          AwkwardFamily::OpenCone,  AwkwardFamily::ClosedCone,
     AwkwardFamily::SpikedComb,    AwkwardFamily::HoleLadder,    AwkwardFamily::HighGenus, AwkwardFamily::SparseHoles,
-    AwkwardFamily::DiagonalHoles};
+    AwkwardFamily::DiagonalHoles, AwkwardFamily::PolygonTree};
 
 /// "hole_corridors", "slit_corridors", "slit_walls", "serpentine_walls", "many_holes", "ears",
-/// "open_cone", "closed_cone", "spiked_comb", "hole_ladder", "high_genus", "sparse_holes", "diagonal_holes".
+/// "open_cone", "closed_cone", "spiked_comb", "hole_ladder", "high_genus", "sparse_holes", "diagonal_holes",
+/// "polygon_tree".
 const char* awkward_family_name(AwkwardFamily family) noexcept;
 
 /// The family at about `triangles` faces (grids kept roughly square, except the eared grid,
