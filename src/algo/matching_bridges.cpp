@@ -2,7 +2,7 @@
 //
 // A strip crosses a bridge of the dual graph (an edge whose removal cuts the faces in two) once
 // unless it is split, so any single strip splits every bridge off the path between its ends;
-// an ear's one passable edge is such a bridge. docs/algorithm.md, "The matching engine", step 3.
+// an ear's one passable edge is such a bridge. docs/algorithm.md, "The matching engine", steps 3-4.
 #include <algorithm>
 #include <cstdint>
 #include <vector>
@@ -48,9 +48,7 @@ void MatchingBuilder::split_ears() {
 // form a ring across it), which removes that parity constraint: a serpentine corridor of odd
 // length between walls has no 2-factor until its one-edge gaps are split.
 MatchingBuilder::DualBridges MatchingBuilder::dual_bridges() const {
-    // Closed and unconstrained, every vertex has a whole ring of faces, a dual cycle through each
-    // edge at it: no bridge.
-    if (stats_.boundary_loops == 0 && opt_.constraint_edges.empty()) return {};
+    if (!may_have_bridges()) return {};
     const uint32_t nf = mesh_.num_faces();
     constexpr uint32_t kUnseen = 0;  // order is 1-based
     IdVector<FaceId, uint32_t> order(nf, kUnseen), low(nf, 0), size(nf, 1), down(nf, 0);
@@ -90,6 +88,12 @@ MatchingBuilder::DualBridges MatchingBuilder::dual_bridges() const {
         }
     }
     return b;
+}
+
+// Closed and unconstrained, every vertex has a whole ring of faces, a dual cycle through each
+// edge at it: no bridge, and no ear.
+bool MatchingBuilder::may_have_bridges() const {
+    return stats_.boundary_loops != 0 || !opt_.constraint_edges.empty();
 }
 
 // Walks from face f away from face `from` through faces with two passable edges; true if it

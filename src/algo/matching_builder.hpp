@@ -62,7 +62,7 @@ private:
     uint32_t pre_merge_splits_ = 0;
     bool chain_splits_ = false;  ///< split_along_chains() split something
     uint32_t ear_splits_ = 0;    ///< split_ears(): ears split
-    /// split_bridges(): splits any single strip of the input needs (ears and bridges, docs/algorithm.md step 3)
+    /// split_bridges(): splits any single strip of the input needs (ears and bridges, docs/algorithm.md steps 3-4)
     uint32_t forced_splits_ = 0;
     // Augmenting search, per face: the outer face it was reached from and the two edges used.
     IdVector<FaceId, FaceId> aug_prev_;
@@ -132,6 +132,7 @@ private:
         uint32_t on_one_path = 0;          ///< the most bridges one path of faces crosses
     };
     DualBridges dual_bridges() const;
+    bool may_have_bridges() const;
     static constexpr uint32_t kMinBridgeSide = 16;
     void split_bridges();
     bool chain_reaches_branch(FaceId f, FaceId from) const;

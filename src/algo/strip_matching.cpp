@@ -470,13 +470,12 @@ StripResult MatchingBuilder::fallback(bool split_mesh_too) {
     Mesh original = input_mesh();  // before mesh_ is handed over
     release_work_arrays();
     StripResult r;
-    if (!split_mesh_too) {
-    } else if (pre_merge_) {                     // the mesh as split so far, and without the joins' splits
+    if (split_mesh_too && pre_merge_) {          // the mesh as split so far, and without the joins' splits
         Mesh before = pre_merge_mesh(original);  // built before mesh_ is moved (arguments have no order)
         auto [split, before_joins] = grow_two(std::move(mesh_), stats_.splits, std::move(before), pre_merge_splits_);
         keep_better(r, std::move(split));
         keep_better(r, std::move(before_joins));
-    } else {
+    } else if (split_mesh_too) {
         keep_better(r, grow(std::move(mesh_), stats_.splits));
     }
     keep_better(r, grow(Mesh(original), 0));
@@ -538,6 +537,7 @@ bool MatchingBuilder::mostly_tree() const {
 // faces. There the bridges are counted on the input, before the ears are split (then undone by
 // rebuilding the input: 1M, 2.6 s against the growth builder's 1.3).
 bool MatchingBuilder::many_ears() const {
+    if (!may_have_bridges()) return false;
     uint32_t ears = 0;
     for (FaceId f : mesh_.faces()) ears += degree(f) == 1;
     return uint64_t{8} * ears >= mesh_.num_faces();
