@@ -64,9 +64,16 @@ private:
     uint32_t ear_splits_ = 0;    ///< split_ears(): ears split
     /// split_bridges(): splits any single strip of the input needs (ears and bridges, docs/algorithm.md steps 3-4)
     uint32_t forced_splits_ = 0;
-    // Augmenting search, per face: the outer face it was reached from and the two edges used.
+    // Augmenting search, per face z: the outer face it was reached from, and the step's two
+    // edges as corner numbers (h, unmatched, a side of aug_prev_[z]; then e, matched, a side of
+    // across(h)): a byte, not two half-edge ids (a 4M-face search: 28 MB of the peak).
     IdVector<FaceId, FaceId> aug_prev_;
-    IdVector<FaceId, HalfedgeId> aug_matched_, aug_unmatched_;
+    IdVector<FaceId, uint8_t> aug_step_;
+    void set_aug_step(FaceId z, HalfedgeId h, HalfedgeId e) {
+        aug_step_[z] = static_cast<uint8_t>(Mesh::index_in_face(h) | Mesh::index_in_face(e) << 2);
+    }
+    [[nodiscard]] HalfedgeId aug_unmatched(FaceId z) const { return Mesh::halfedge(aug_prev_[z], aug_step_[z] & 3u); }
+    [[nodiscard]] HalfedgeId aug_matched(FaceId z) const { return Mesh::halfedge(across(aug_unmatched(z)), aug_step_[z] >> 2); }
     std::vector<FaceId> aug_queue_;
     /// augment_fewest_swaps()' queue: expand face x, or (end set) end the path across end.
     struct AugEntry {

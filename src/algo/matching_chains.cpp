@@ -261,8 +261,7 @@ std::vector<FaceId> MatchingBuilder::apply_chain_path(const std::vector<ChainSte
     const uint32_t nf = mesh_.num_faces();
     ch_stamp_.resize(nf, 0);
     aug_prev_.resize(nf);
-    aug_matched_.resize(nf);
-    aug_unmatched_.resize(nf);
+    aug_step_.resize(nf);
     for (FaceId f : wanting)
         while (quota_[f] > 0 && augment_from(f, ch_stamp_, ++ch_mark_, 64)) {
         }

@@ -24,8 +24,8 @@ namespace singlestrip::matching {
 // becomes matched, the inner face's edge to z unmatched.
 void MatchingBuilder::flip_to_root(FaceId z) {
     for (; aug_prev_[z] != kNone; z = aug_prev_[z]) {
-        set_matched(aug_matched_[z], 0);
-        set_matched(aug_unmatched_[z], 1);
+        set_matched(aug_matched(z), 0);
+        set_matched(aug_unmatched(z), 1);
     }
 }
 
@@ -67,8 +67,7 @@ uint32_t MatchingBuilder::forest_pass(const std::vector<FaceId>& roots, IdVector
                 if (tree(z) != UINT32_MAX) continue;
                 stamp[z] = base + 2 * t;
                 aug_prev_[z] = x;
-                aug_unmatched_[z] = h;
-                aug_matched_[z] = e;
+                set_aug_step(z, h, e);
                 queue.push_back(z);
             }
         }
@@ -152,7 +151,7 @@ uint32_t MatchingBuilder::forest_pass_fewest(const std::vector<FaceId>& roots, I
                 const FaceId z = across(e);
                 if (tree(z) != UINT32_MAX) continue;
                 stamp[z] = base + 2 * t;
-                aug_prev_[z] = x, aug_unmatched_[z] = h, aug_matched_[z] = e;
+                aug_prev_[z] = x, set_aug_step(z, h, e);
                 aug_swaps_[z] = swaps;
                 heap.push({swaps, z, kNone});
             }

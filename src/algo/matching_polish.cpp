@@ -45,8 +45,8 @@ bool MatchingBuilder::polish_at(FaceId f, HalfedgeId m, PolishScratch& s) {
     if (gh == m) return false;  // the path is m itself: the matching is as it was
     s.steps.push_back({gh, kNone});
     for (FaceId z = across(gh); z != f; z = aug_prev_[z]) {
-        s.faces.push_back(z), s.faces.push_back(Mesh::face(aug_matched_[z]));
-        s.steps.push_back({aug_unmatched_[z], aug_matched_[z]});
+        s.faces.push_back(z), s.faces.push_back(Mesh::face(aug_matched(z)));
+        s.steps.push_back({aug_unmatched(z), aug_matched(z)});
     }
     s.faces.push_back(f);
     for (FaceId q : s.faces) s.in_set[q] = s.set_mark;
@@ -77,7 +77,7 @@ void MatchingBuilder::polish() {
         if (quota_[f] > 0) hidden.emplace_back(f, quota_[f]), quota_[f] = 0;
     PolishScratch s;
     s.stamp.assign(nf, 0), s.in_set.assign(nf, 0);
-    aug_prev_.assign(nf, kNone), aug_matched_.assign(nf, kNone), aug_unmatched_.assign(nf, kNone);
+    aug_prev_.assign(nf, kNone), aug_step_.assign(nf, 0);
     cross_on(true);  // augment_fewest_swaps() reads it
     auto crossed = [&](HalfedgeId a) { return passable(a) && !matched_[a]; };
     for (FaceId f : mesh_.faces()) {

@@ -41,8 +41,8 @@ bool MatchingBuilder::augment_from(FaceId u, IdVector<FaceId, uint32_t>& stamp, 
             if (quota_[y] > 0) {  // flip the path back to u
                 set_pair(matched_, h, 1);
                 for (FaceId z = x; z != u; z = aug_prev_[z]) {
-                    set_pair(matched_, aug_matched_[z], 0);
-                    set_pair(matched_, aug_unmatched_[z], 1);
+                    set_pair(matched_, aug_matched(z), 0);
+                    set_pair(matched_, aug_unmatched(z), 1);
                 }
                 --quota_[u];
                 --quota_[y];
@@ -54,8 +54,7 @@ bool MatchingBuilder::augment_from(FaceId u, IdVector<FaceId, uint32_t>& stamp, 
                 if (stamp[z] == mark) continue;
                 stamp[z] = mark;
                 aug_prev_[z] = x;
-                aug_unmatched_[z] = h;
-                aug_matched_[z] = e;
+                set_aug_step(z, h, e);
                 queue.push_back(z);
             }
         }
@@ -196,7 +195,7 @@ void MatchingBuilder::match_ball(const std::vector<FaceId>& kept, const std::vec
 int MatchingBuilder::step_swaps(FaceId x, HalfedgeId h, bool x_is_root, bool y_is_end) const {
     const HalfedgeId t = mesh_.twin(h);
     const FaceId y = Mesh::face(t);
-    const HalfedgeId yp_in = x_is_root ? kNone : mesh_.twin(aug_unmatched_[x]);  // x's previous partner's matched edge
+    const HalfedgeId yp_in = x_is_root ? kNone : mesh_.twin(aug_unmatched(x));  // x's previous partner's matched edge
     const FaceId yp = x_is_root ? FaceId(kNone) : Mesh::face(yp_in);
     // A face's crossed edges before the flip (its cross_ byte: bits 0-2, passable 3-5, vlink 6)
     // and after: x, y and yp cross every passable edge but their new matched one.
@@ -250,8 +249,8 @@ bool MatchingBuilder::augment_fewest_swaps(FaceId u, IdVector<FaceId, uint32_t>&
             if (quota_[y] == 0) continue;
             set_matched(h, 1);
             for (FaceId z = x; z != u; z = aug_prev_[z]) {
-                set_matched(aug_matched_[z], 0);
-                set_matched(aug_unmatched_[z], 1);
+                set_matched(aug_matched(z), 0);
+                set_matched(aug_unmatched(z), 1);
             }
             --quota_[u];
             --quota_[y];
@@ -273,8 +272,7 @@ bool MatchingBuilder::augment_fewest_swaps(FaceId u, IdVector<FaceId, uint32_t>&
                 if (stamp[z] == mark) continue;
                 stamp[z] = mark;
                 aug_prev_[z] = x;
-                aug_unmatched_[z] = h;
-                aug_matched_[z] = e;
+                set_aug_step(z, h, e);
                 heap.push({swaps, z, kNone});
                 ++reached;
             }
@@ -288,14 +286,14 @@ bool MatchingBuilder::augment_fewest_swaps(FaceId u, IdVector<FaceId, uint32_t>&
 void MatchingBuilder::repair_short(std::vector<FaceId>& short_faces) {
     if (short_faces.empty()) return;
     const uint32_t nf = mesh_.num_faces();
-    // The plain searches' and Edmonds' per-face arrays (16 and 17 bytes a face) are never held
+    // The plain searches' and Edmonds' per-face arrays (9 and 17 bytes a face) are never held
     // together: together they were the matching engine's memory peak (genus-20 surface, 2M faces).
     IdVector<FaceId, uint32_t> stamp;
     auto plain_arrays = [&](bool on) {
         if (on) {
-            stamp.assign(nf, 0), aug_prev_.assign(nf, kNone), aug_matched_.assign(nf, kNone), aug_unmatched_.assign(nf, kNone);
+            stamp.assign(nf, 0), aug_prev_.assign(nf, kNone), aug_step_.assign(nf, 0);
         } else {
-            stamp.reset(), aug_prev_.reset(), aug_matched_.reset(), aug_unmatched_.reset();
+            stamp.reset(), aug_prev_.reset(), aug_step_.reset();
         }
     };
     plain_arrays(true);
@@ -448,11 +446,11 @@ void MatchingBuilder::settle_leftovers() {
     release_repair_scratch();
 }
 
-// The searches' per-face arrays (up to 28 bytes per face) are not used after the matching: free
+// The searches' per-face arrays (9 bytes a face and a queue) are not used after the matching: free
 // them before the joins build theirs (issue 17's peak memory).
 void MatchingBuilder::release_repair_scratch() {
     auto release = [](auto& v) { std::remove_reference_t<decltype(v)>().swap(v); };
-    release(aug_prev_), release(aug_matched_), release(aug_unmatched_), release(aug_queue_);
+    release(aug_prev_), release(aug_step_), release(aug_queue_);
     aug_buckets_ = {}, aug_end_buckets_ = {};
     release(bl_stamp_), release(bl_seen_), release(bl_base_), release(bl_parent_), release(bl_label_);
     release(bl_touched_), release(bl_queue_), release(bl_merge_);

@@ -378,7 +378,7 @@ StripResult MatchingBuilder::finish(std::vector<uint32_t> order, uint32_t swaps)
 void MatchingBuilder::release_work_arrays() noexcept {
     blocked_.reset(), matched_.reset(), used_.reset(), vlink_.reset(), quota_.reset(), sid_.reset();
     uf_.reset(), cycle_.reset(), pinned_.reset(), ch_stamp_.reset(), ball_local_.reset(), ball_whole_.reset();
-    aug_prev_.reset(), aug_matched_.reset(), aug_unmatched_.reset();
+    aug_prev_.reset(), aug_step_.reset();
     release_blossom_arrays();
 }
 
