@@ -38,7 +38,7 @@ private:
     // Per half-edge, symmetric across twins (a half-edge and its twin always agree).
     EdgeFlags blocked_;  ///< constraint edge: never crossed
     EdgeFlags matched_;  ///< passable edge not crossed, paired by the matching
-    EdgeFlags used_;     ///< crossed by the strip (an edge of the loops and paths)
+    EdgeFlags used_;     ///< crossed by the strip (an edge of the loops and paths); empty until the matching is settled
     // Per face.
     IdVector<FaceId, uint8_t> vlink_;  ///< linked to the virtual face (a pinned end)
     IdVector<FaceId, uint8_t> quota_;  ///< matched edges still wanted

@@ -75,6 +75,7 @@ SplitResult MatchingBuilder::split(HalfedgeId h) {
     const HalfedgeId fb[3] = {Mesh::halfedge(sr.f_b, 0), Mesh::halfedge(sr.f_b, 1), Mesh::halfedge(sr.f_b, 2)};
     const HalfedgeId ga[3] = {Mesh::halfedge(sr.g_a, 0), Mesh::halfedge(sr.g_a, 1), Mesh::halfedge(sr.g_a, 2)};
     for (EdgeFlags* a : {&blocked_, &matched_, &used_}) {
+        if (a == &used_ && used_.empty()) continue;  // before the matching is settled: all clear
         reserve_gently(*a, mesh_.num_halfedges());
         a->resize(mesh_.num_halfedges(), 0);
         (*a)[fb[1]] = (*a)[hn];
@@ -598,7 +599,7 @@ StripResult MatchingBuilder::run() {
     stats_.genus = genus_from_euler(mesh_.euler_characteristic(), stats_.boundary_loops, 1);  // loops counted once
     stats_.engine = StripEngine::Matching;
     matched_.assign(mesh_.num_halfedges(), 0);
-    used_.assign(mesh_.num_halfedges(), 0);
+    used_.reset();
     vlink_.assign(nf, 0);
     quota_.assign(nf, 0);
     choose_pins();
